@@ -1,0 +1,27 @@
+// `ussnav config print|check`: show the effective configuration, or validate a file.
+
+#include <iostream>
+
+#include "command.hpp"
+
+namespace ussnav::cli {
+namespace {
+
+void addConfigCommands(CLI::App& root) {
+  auto* cmd = root.add_subcommand("config", "Print or check the configuration");
+  cmd->require_subcommand(1);
+  cmd->fallthrough();
+  auto* print = cmd->add_subcommand("print", "Print the effective config (file + --set) as YAML");
+  print->fallthrough();
+  print->callback([] { std::cout << configToYaml(globals().config()); });
+  auto* check = cmd->add_subcommand("check", "Validate the config; exit 2 with the bad key if invalid");
+  check->fallthrough();
+  check->callback([] {
+    globals().config();
+    std::cout << "config ok\n";
+  });
+}
+
+}  // namespace
+USSNAV_COMMAND(90, addConfigCommands);
+}  // namespace ussnav::cli

@@ -1,0 +1,37 @@
+#include "support/paths.hpp"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+
+namespace ussnav::test {
+
+std::filesystem::path sharedData() { return USSNAV_SHARED_DATA_DIR; }
+
+bool haveSharedData() { return std::filesystem::exists(sharedData() / "README.md"); }
+
+std::string cliPath() { return USSNAV_CLI_PATH; }
+
+int runCommand(const std::string& cmd, std::string* output) {
+  FILE* p = ::popen((cmd + " 2>&1").c_str(), "r");
+  if (!p) return -1;
+  std::array<char, 4096> buf{};
+  std::string out;
+  size_t n;
+  while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
+  const int st = ::pclose(p);
+  if (output) *output = out;
+  return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+std::filesystem::path tempDir(const std::string& name) {
+  auto d = std::filesystem::temp_directory_path() /
+           ("ussnav_test_" + name + "_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(d);
+  std::filesystem::create_directories(d);
+  return d;
+}
+
+}  // namespace ussnav::test
