@@ -8,9 +8,7 @@ namespace ussnav::cli {
 namespace {
 
 void addConfigCommands(CLI::App& root) {
-  auto* cmd = root.add_subcommand("config", "Print or check the configuration");
-  cmd->require_subcommand(1);
-  cmd->fallthrough();
+  auto* cmd = subcommandGroup(root, "config", "Print or check the configuration");
   auto* print = cmd->add_subcommand("print", "Print the effective config (file + --set) as YAML");
   print->fallthrough();
   print->callback([] { std::cout << configToYaml(globals().config()); });

@@ -31,6 +31,10 @@ using CommandFactory = std::function<void(CLI::App& root)>;
 bool registerCommand(int order, CommandFactory f);
 std::vector<std::pair<int, CommandFactory>>& commandRegistry();
 
+// The subcommand `name` of `parent`, created (with `description`, fallthrough on) if absent.
+// Lets several cmd_*.cpp files add children to one group, e.g. `world generate|import`.
+CLI::App* subcommandGroup(CLI::App& parent, const std::string& name, const std::string& description);
+
 // Progress line on stderr (overwritten in place when stderr is a terminal).
 void progress(const std::string& line);
 void progressDone();

@@ -36,6 +36,14 @@ bool registerCommand(int order, CommandFactory f) {
   return true;
 }
 
+CLI::App* subcommandGroup(CLI::App& parent, const std::string& name, const std::string& description) {
+  if (CLI::App* existing = parent.get_subcommand_no_throw(name)) return existing;
+  CLI::App* g = parent.add_subcommand(name, description);
+  g->require_subcommand(1);
+  g->fallthrough();
+  return g;
+}
+
 void progress(const std::string& line) {
   if (globals().quiet) return;
   static const bool tty = ::isatty(2);
