@@ -37,7 +37,8 @@ bool registerCommand(int order, CommandFactory f) {
 }
 
 CLI::App* subcommandGroup(CLI::App& parent, const std::string& name, const std::string& description) {
-  if (CLI::App* existing = parent.get_subcommand_no_throw(name)) return existing;
+  for (CLI::App* existing : parent.get_subcommands({}))
+    if (existing->get_name() == name) return existing;
   CLI::App* g = parent.add_subcommand(name, description);
   g->require_subcommand(1);
   g->fallthrough();
