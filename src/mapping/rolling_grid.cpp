@@ -99,6 +99,12 @@ float RollingGrid::logOdds(const Vec3i& key) const {
 void RollingGrid::setMinKey(const Vec3i& k) {
   min_key_ = k;
   off_ = Vec3i(floorMod(k.x(), dims_.x()), floorMod(k.y(), dims_.y()), floorMod(k.z(), dims_.z()));
+  std::vector<uint32_t>* tables[3] = {&ring_x_, &ring_y_, &ring_z_};
+  const size_t stride[3] = {1, stride_y_, stride_z_};
+  for (int i = 0; i < 3; ++i) {
+    tables[i]->resize(size_t(dims_[i]));
+    for (int l = 0; l < dims_[i]; ++l) (*tables[i])[size_t(l)] = uint32_t(size_t((l + off_[i]) % dims_[i]) * stride[i]);
+  }
 }
 
 void RollingGrid::resetBox(const Vec3i& lo, const Vec3i& hi) {
@@ -155,21 +161,22 @@ void RollingGrid::clearChanges() {
 
 size_t RollingGrid::voxelBytes(const GridConfig& cfg) {
   const auto n = [&](double s) { return size_t(std::max(0.0, std::round(s / cfg.resolution))); };
-  return n(cfg.size_x) * n(cfg.size_y) * n(cfg.size_z) * (sizeof(int16_t) + sizeof(uint8_t) + sizeof(uint16_t));
+  return n(cfg.size_x) * n(cfg.size_y) * n(cfg.size_z) * (sizeof(int16_t) + sizeof(uint8_t) + sizeof(uint8_t));
 }
 
 size_t RollingGrid::memoryBytes() const {
   return sizeof(*this) + log_odds_.capacity() * sizeof(int16_t) + state_.capacity() +
-         stamp_.capacity() * sizeof(uint16_t) + (hit_rays_.capacity() + open_rays_.capacity()) * sizeof(Ray) +
+         stamp_.capacity() + (ring_x_.capacity() + ring_y_.capacity() + ring_z_.capacity()) * sizeof(uint32_t) +
+         (hit_rays_.capacity() + open_rays_.capacity()) * sizeof(Ray) +
          (col_scale_.capacity() + row_scale_.capacity()) * sizeof(float) +
          changes_.capacity() * sizeof(VoxelChange);
 }
 
 // ---- insertion -------------------------------------------------------------------------
 
-uint16_t RollingGrid::beginFrame() {
-  if (++cur_stamp_ == 0) {  // wrapped: forget all stamps once every 65535 frames
-    std::fill(stamp_.begin(), stamp_.end(), uint16_t(0));
+uint8_t RollingGrid::beginFrame() {
+  if (++cur_stamp_ == 0) {  // wrapped: forget all stamps once every 255 frames
+    std::fill(stamp_.begin(), stamp_.end(), uint8_t(0));
     cur_stamp_ = 1;
   }
   hit_rays_.clear();
@@ -203,7 +210,7 @@ void RollingGrid::applyHit(size_t idx, const Vec3i& local, InsertStats& st) {
   }
 }
 
-void RollingGrid::applyMiss(size_t idx, const int* local, InsertStats& st) {
+inline void RollingGrid::applyMiss(size_t idx, int x, int y, int z, InsertStats& st) {
   if (stamp_[idx] == cur_stamp_) return;
   stamp_[idx] = cur_stamp_;
   ++st.voxel_updates;
@@ -214,7 +221,7 @@ void RollingGrid::applyMiss(size_t idx, const int* local, InsertStats& st) {
   if (s1 != s0) {
     known_count_ += s0 == 0;
     state_[idx] = s1;
-    record(Vec3i(local[0], local[1], local[2]), VoxelState(s0), VoxelState(s1), st);
+    record(Vec3i(x, y, z), VoxelState(s0), VoxelState(s1), st);
   }
 }
 
@@ -226,11 +233,7 @@ void RollingGrid::addEndpoint(const Vec3f& s, const Vec3f& p, bool is_return, In
     if (p.x() >= 0 && p.y() >= 0 && p.z() >= 0 && p.x() < dims_.x() && p.y() < dims_.y() && p.z() < dims_.z()) {
       ++st.hits;
       const Vec3i k(int(p.x()), int(p.y()), int(p.z()));
-      int rx = k.x() + off_.x(), ry = k.y() + off_.y(), rz = k.z() + off_.z();
-      if (rx >= dims_.x()) rx -= dims_.x();
-      if (ry >= dims_.y()) ry -= dims_.y();
-      if (rz >= dims_.z()) rz -= dims_.z();
-      const size_t idx = size_t(rx) + stride_y_ * size_t(ry) + stride_z_ * size_t(rz);
+      const size_t idx = ring_x_[size_t(k.x())] + ring_y_[size_t(k.y())] + ring_z_[size_t(k.z())];
       if (stamp_[idx] == cur_stamp_) return;
       stamp_[idx] = cur_stamp_;
       applyHit(idx, k, st);
@@ -254,50 +257,43 @@ void RollingGrid::addEndpoint(const Vec3f& s, const Vec3f& p, bool is_return, In
 
 template <bool kIncludeEnd>
 void RollingGrid::walkMisses(const Vec3f& s, const Ray& r, InsertStats& st) {
-  const float inf = std::numeric_limits<float>::infinity();
+  constexpr float inf = std::numeric_limits<float>::infinity();
   const float e[3] = {r.x, r.y, r.z};
   const int b[3] = {r.ex, r.ey, r.ez};
-  int cur[3], ring[3], step[3], remaining[3];
+  int c[3], step[3], rem[3];
   float t_max[3], t_delta[3];
-  const size_t stride[3] = {1, stride_y_, stride_z_};
-  size_t idx = 0;
   for (int i = 0; i < 3; ++i) {
-    cur[i] = std::min(int(s[i]), dims_[i] - 1);
-    ring[i] = cur[i] + off_[i];
-    if (ring[i] >= dims_[i]) ring[i] -= dims_[i];
-    idx += size_t(ring[i]) * stride[i];
-    remaining[i] = std::abs(b[i] - cur[i]);
-    step[i] = b[i] > cur[i] ? 1 : -1;
-    if (remaining[i] == 0) {
+    c[i] = std::min(int(s[i]), dims_[i] - 1);
+    rem[i] = std::abs(b[i] - c[i]);
+    step[i] = b[i] > c[i] ? 1 : -1;
+    if (rem[i] == 0) {
       t_max[i] = t_delta[i] = inf;
       continue;
     }
     t_delta[i] = 1.f / std::max(std::abs(e[i] - s[i]), 1e-6f);
-    t_max[i] = (step[i] > 0 ? float(cur[i] + 1) - s[i] : s[i] - float(cur[i])) * t_delta[i];
+    t_max[i] = (step[i] > 0 ? float(c[i] + 1) - s[i] : s[i] - float(c[i])) * t_delta[i];
   }
-  const int total = remaining[0] + remaining[1] + remaining[2];
-  for (int k = 0; k < total; ++k) {
-    applyMiss(idx, cur, st);
-    const int a = t_max[0] < t_max[1] ? (t_max[0] < t_max[2] ? 0 : 2) : (t_max[1] < t_max[2] ? 1 : 2);
-    cur[a] += step[a];
-    if (step[a] > 0) {
-      if (++ring[a] == dims_[a]) {
-        ring[a] = 0;
-        idx -= size_t(dims_[a] - 1) * stride[a];
-      } else {
-        idx += stride[a];
-      }
+  // Scalars, not arrays, so the loop state stays in registers; per-axis ring tables turn a
+  // local coordinate into its share of the ring index without a modulo or a wrap branch.
+  int cx = c[0], cy = c[1], cz = c[2], rx = rem[0], ry = rem[1], rz = rem[2];
+  float tx = t_max[0], ty = t_max[1], tz = t_max[2];
+  const float dx = t_delta[0], dy = t_delta[1], dz = t_delta[2];
+  const int sx = step[0], sy = step[1], sz = step[2];
+  const uint32_t *RX = ring_x_.data(), *RY = ring_y_.data(), *RZ = ring_z_.data();
+  for (int k = rx + ry + rz; k > 0; --k) {
+    applyMiss(RX[cx] + RY[cy] + RZ[cz], cx, cy, cz, st);
+    if (tx <= ty && tx <= tz) {
+      cx += sx;
+      tx = --rx ? tx + dx : inf;
+    } else if (ty <= tz) {
+      cy += sy;
+      ty = --ry ? ty + dy : inf;
     } else {
-      if (ring[a]-- == 0) {
-        ring[a] = dims_[a] - 1;
-        idx += size_t(dims_[a] - 1) * stride[a];
-      } else {
-        idx -= stride[a];
-      }
+      cz += sz;
+      tz = --rz ? tz + dz : inf;
     }
-    t_max[a] = --remaining[a] == 0 ? inf : t_max[a] + t_delta[a];
   }
-  if constexpr (kIncludeEnd) applyMiss(idx, cur, st);
+  if constexpr (kIncludeEnd) applyMiss(RX[cx] + RY[cy] + RZ[cz], cx, cy, cz, st);
 }
 
 void RollingGrid::castRays(const Vec3f& s, InsertStats& st) {
@@ -307,7 +303,7 @@ void RollingGrid::castRays(const Vec3f& s, InsertStats& st) {
     // An open ray whose end voxel another ray of this frame already crossed runs within a
     // voxel of that ray all the way from the shared origin: skipping it loses almost nothing
     // and saves most of the work for no-return pixels (they fan out far less than they number).
-    if (stamp_[index(min_key_ + Vec3i(r.ex, r.ey, r.ez))] == cur_stamp_) continue;
+    if (stamp_[ring_x_[size_t(r.ex)] + ring_y_[size_t(r.ey)] + ring_z_[size_t(r.ez)]] == cur_stamp_) continue;
     walkMisses<true>(s, r, st);
     ++rays;
   }

@@ -113,7 +113,7 @@ TEST(RollingGrid, ConfigValidation) {
 TEST(RollingGrid, MemoryIsFixedByTheConfig) {
   GridConfig c;
   RollingGrid g(c, Vec3(0, 0, 1.2));
-  EXPECT_EQ(RollingGrid::voxelBytes(c), size_t(80 * 80 * 40) * 5);
+  EXPECT_EQ(RollingGrid::voxelBytes(c), size_t(80 * 80 * 40) * 4);
   EXPECT_GE(g.memoryBytes(), RollingGrid::voxelBytes(c));
   EXPECT_LT(g.memoryBytes(), RollingGrid::voxelBytes(c) + 4096);
   const Aabb w = g.window();

@@ -3,8 +3,8 @@
 // 0.1 m, centred on the UAV in all three axes). Voxels live in a ring buffer (index = key mod
 // dims), so moveTo() resets only the voxels that leave: O(voxels leaving), no allocation.
 // Insertion casts one ray per distinct end voxel per frame (hit first, then misses; each voxel
-// updated at most once per frame); rays are clipped to the window. Memory: 5 bytes per voxel
-// (int16 log-odds, state byte, uint16 frame stamp) plus per-frame scratch, see memoryBytes().
+// updated at most once per frame); rays are clipped to the window. Memory: 4 bytes per voxel
+// (int16 log-odds, state byte, frame-stamp byte) plus per-frame scratch, see memoryBytes().
 
 #include <cstddef>
 #include <cstdint>
@@ -143,14 +143,14 @@ class RollingGrid final : public OccupancyMap {
   };
   void resetBox(const Vec3i& lo, const Vec3i& hi);  // old-window keys [lo, hi)
   void setMinKey(const Vec3i& k);
-  uint16_t beginFrame();
+  uint8_t beginFrame();
   bool originInWindow(const Vec3f& local, InsertStats& st);
   void addEndpoint(const Vec3f& s, const Vec3f& p, bool is_return, InsertStats& st);
   void castRays(const Vec3f& s, InsertStats& st);
   template <bool kIncludeEnd>
   void walkMisses(const Vec3f& s, const Ray& r, InsertStats& st);
   void applyHit(size_t idx, const Vec3i& local, InsertStats& st);
-  void applyMiss(size_t idx, const int* local, InsertStats& st);
+  void applyMiss(size_t idx, int x, int y, int z, InsertStats& st);
   void record(const Vec3i& local, VoxelState before, VoxelState after, InsertStats& st) {
     changes_.push_back({min_key_ + local, before, after});
     ++st.state_changes;
@@ -164,8 +164,9 @@ class RollingGrid final : public OccupancyMap {
   int16_t hit_q_, miss_q_, min_q_, max_q_, thr_q_;  // log-odds in thousandths
   std::vector<int16_t> log_odds_;
   std::vector<uint8_t> state_;
-  std::vector<uint16_t> stamp_;
-  uint16_t cur_stamp_ = 0;
+  std::vector<uint8_t> stamp_;  // frame stamp: updated in the current frame already
+  uint8_t cur_stamp_ = 0;
+  std::vector<uint32_t> ring_x_, ring_y_, ring_z_;  // local coordinate -> ring index share
   size_t known_count_ = 0;
   std::vector<Ray> hit_rays_, open_rays_;
   std::vector<float> col_scale_, row_scale_;  // per-pixel (u-cx)/fx, (v-cy)/fy
