@@ -175,10 +175,13 @@ size_t RollingGrid::memoryBytes() const {
 // ---- insertion -------------------------------------------------------------------------
 
 uint8_t RollingGrid::beginFrame() {
-  if (++cur_stamp_ == 0) {  // wrapped: forget all stamps once every 255 frames
+  // Three stamps per frame (claimed < hit < missed, all above earlier frames' stamps); when
+  // they run out, every 84 frames, all stamps are forgotten at once.
+  if (cur_stamp_ >= 252) {
     std::fill(stamp_.begin(), stamp_.end(), uint8_t(0));
-    cur_stamp_ = 1;
+    cur_stamp_ = 0;
   }
+  cur_stamp_ = uint8_t(cur_stamp_ + 3);
   hit_rays_.clear();
   open_rays_.clear();
   return cur_stamp_;
@@ -211,8 +214,8 @@ void RollingGrid::applyHit(size_t idx, const Vec3i& local, InsertStats& st) {
 }
 
 inline void RollingGrid::applyMiss(size_t idx, int x, int y, int z, InsertStats& st) {
-  if (stamp_[idx] == cur_stamp_) return;
-  stamp_[idx] = cur_stamp_;
+  if (stamp_[idx] > claimedStamp()) return;  // hit or missed in this frame already
+  stamp_[idx] = missStamp();
   ++st.voxel_updates;
   const uint8_t s0 = state_[idx];
   const int lo = std::max(int(s0 ? log_odds_[idx] : 0) + miss_q_, int(min_q_));
@@ -234,8 +237,8 @@ void RollingGrid::addEndpoint(const Vec3f& s, const Vec3f& p, bool is_return, In
       ++st.hits;
       const Vec3i k(int(p.x()), int(p.y()), int(p.z()));
       const size_t idx = ring_x_[size_t(k.x())] + ring_y_[size_t(k.y())] + ring_z_[size_t(k.z())];
-      if (stamp_[idx] == cur_stamp_) return;
-      stamp_[idx] = cur_stamp_;
+      if (stamp_[idx] == hitStamp()) return;
+      stamp_[idx] = hitStamp();
       applyHit(idx, k, st);
       hit_rays_.push_back({p.x(), p.y(), p.z(), k.x(), k.y(), k.z()});
       return;
@@ -252,6 +255,12 @@ void RollingGrid::addEndpoint(const Vec3f& s, const Vec3f& p, bool is_return, In
   Ray r{e.x(), e.y(), e.z(), 0, 0, 0};
   int* ek = &r.ex;
   for (int i = 0; i < 3; ++i) ek[i] = std::clamp(int(std::floor(e[i])), 0, dims_[i] - 1);
+  // One open ray per end voxel: rays from one origin that end in the same voxel run within a
+  // voxel of each other all the way (no-return pixels and returns beyond the window come in
+  // bundles of tens per boundary voxel).
+  uint8_t& stamp = stamp_[ring_x_[size_t(r.ex)] + ring_y_[size_t(r.ey)] + ring_z_[size_t(r.ez)]];
+  if (stamp == claimedStamp()) return;
+  if (stamp < claimedStamp()) stamp = claimedStamp();
   open_rays_.push_back(r);
 }
 
@@ -297,17 +306,10 @@ void RollingGrid::walkMisses(const Vec3f& s, const Ray& r, InsertStats& st) {
 }
 
 void RollingGrid::castRays(const Vec3f& s, InsertStats& st) {
-  int rays = int(hit_rays_.size());
+  const int rays = int(hit_rays_.size());
   for (const Ray& r : hit_rays_) walkMisses<false>(s, r, st);
-  for (const Ray& r : open_rays_) {
-    // An open ray whose end voxel another ray of this frame already crossed runs within a
-    // voxel of that ray all the way from the shared origin: skipping it loses almost nothing
-    // and saves most of the work for no-return pixels (they fan out far less than they number).
-    if (stamp_[ring_x_[size_t(r.ex)] + ring_y_[size_t(r.ey)] + ring_z_[size_t(r.ez)]] == cur_stamp_) continue;
-    walkMisses<true>(s, r, st);
-    ++rays;
-  }
-  st.rays = rays;
+  for (const Ray& r : open_rays_) walkMisses<true>(s, r, st);
+  st.rays = rays + int(open_rays_.size());
 }
 
 void RollingGrid::finishFrame(const InsertStats& st) {

@@ -164,8 +164,11 @@ class RollingGrid final : public OccupancyMap {
   int16_t hit_q_, miss_q_, min_q_, max_q_, thr_q_;  // log-odds in thousandths
   std::vector<int16_t> log_odds_;
   std::vector<uint8_t> state_;
-  std::vector<uint8_t> stamp_;  // frame stamp: updated in the current frame already
+  std::vector<uint8_t> stamp_;  // per-frame marks, see beginFrame()
   uint8_t cur_stamp_ = 0;
+  uint8_t claimedStamp() const { return cur_stamp_; }  // end voxel of an open ray of this frame
+  uint8_t hitStamp() const { return uint8_t(cur_stamp_ + 1); }
+  uint8_t missStamp() const { return uint8_t(cur_stamp_ + 2); }
   std::vector<uint32_t> ring_x_, ring_y_, ring_z_;  // local coordinate -> ring index share
   size_t known_count_ = 0;
   std::vector<Ray> hit_rays_, open_rays_;
