@@ -1,0 +1,150 @@
+#include "ussnav/skeleton/expansion.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ussnav/skeleton/connectivity_graph.hpp"
+
+namespace ussnav {
+
+namespace {
+
+// Fraction t in [0, 1] of the segment from -> to that stays inside box `w` (from is inside).
+double clipToBox(const Aabb& w, const Vec3& from, const Vec3& to) {
+  double t = 1.0;
+  const Vec3 d = to - from;
+  for (int i = 0; i < 3; ++i) {
+    if (d[i] > 0 && to[i] > w.max[i]) t = std::min(t, (w.max[i] - from[i]) / d[i]);
+    if (d[i] < 0 && to[i] < w.min[i]) t = std::min(t, (w.min[i] - from[i]) / d[i]);
+  }
+  return std::max(0.0, t);
+}
+
+}  // namespace
+
+const char* seedStatusName(SeedStatus s) {
+  switch (s) {
+    case SeedStatus::Accepted: return "accepted";
+    case SeedStatus::TooClose: return "too_close";
+    case SeedStatus::InsideExisting: return "inside_existing";
+    case SeedStatus::Unsafe: return "unsafe";
+    case SeedStatus::Deferred: return "deferred";
+  }
+  return "?";
+}
+
+Polyhedron expandNewPolyhedron(const OccupancyMap& map, const Vec3& seed,
+                               const std::vector<Vec3>& directions, const SkeletonConfig& cfg) {
+  std::vector<Vec3> pts;
+  std::vector<VertexKind> kinds;
+  pts.reserve(directions.size());
+  kinds.reserve(directions.size());
+  const Aabb window = map.window();
+  for (const Vec3& dir : directions) {
+    Vec3 end = seed + dir * cfg.max_radius;
+    VertexKind kind = VertexKind::Free;
+    if (!cfg.unknown_is_contact) {
+      // Unknown voxels are passable, but nothing is known beyond the window: stop at its edge.
+      const double t = clipToBox(window, seed, end);
+      if (t < 1.0) {
+        end = seed + (end - seed) * t;
+        kind = VertexKind::Unknown;
+      }
+    }
+    const RayHit hit = castRay(map, seed, end, cfg.unknown_is_contact);
+    if (hit.blocked) {
+      pts.push_back(hit.point);
+      kinds.push_back(hit.hit_state == VoxelState::Occupied ? VertexKind::Obstacle : VertexKind::Unknown);
+    } else {
+      pts.push_back(end);
+      kinds.push_back(kind);
+    }
+  }
+  return buildPolyhedron(std::move(pts), std::move(kinds));
+}
+
+bool findUnsafeVoxel(const OccupancyMap& map, const Vec3& p, double radius, bool unknown_unsafe,
+                     Vec3i* key, VoxelState* state) {
+  const double res = map.resolution();
+  const Vec3i c = map.keyOf(p);
+  const int n = int(std::ceil(radius / res));
+  bool have_unknown = false;
+  Vec3i unknown_key = c;
+  for (int dz = -n; dz <= n; ++dz)
+    for (int dy = -n; dy <= n; ++dy)
+      for (int dx = -n; dx <= n; ++dx) {
+        const Vec3i k = c + Vec3i(dx, dy, dz);
+        const Vec3 lo = k.cast<double>() * res, hi = lo + Vec3::Constant(res);
+        if ((p.cwiseMax(lo).cwiseMin(hi) - p).norm() > radius) continue;
+        const VoxelState st = map.state(k);
+        if (st == VoxelState::Occupied) {
+          if (key) *key = k;
+          if (state) *state = st;
+          return true;  // an obstacle decides: no need to look for unknown voxels
+        }
+        if (unknown_unsafe && st == VoxelState::Unknown && !have_unknown) {
+          have_unknown = true;
+          unknown_key = k;
+        }
+      }
+  if (have_unknown) {
+    if (key) *key = unknown_key;
+    if (state) *state = VoxelState::Unknown;
+  }
+  return have_unknown;
+}
+
+SeedDecision findNewExpandSeed(const BoundarySurface& surface, const OccupancyMap& map,
+                               const ConnectivityGraph& graph, const SkeletonConfig& cfg) {
+  SeedDecision d;
+  const bool unknown_blocks = cfg.unknown_is_contact;
+  const Vec3 from = surface.nexus;
+  const Vec3i from_key = map.keyOf(from);
+  d.position = from;
+  if (!map.inWindow(from_key)) {
+    d.status = SeedStatus::Deferred;
+    d.probe = from_key;
+    return d;
+  }
+  const VoxelState from_state = map.state(from_key);
+  if (from_state == VoxelState::Occupied) return d;  // Unsafe: the opening sits on an obstacle
+  if (from_state == VoxelState::Unknown && unknown_blocks) {
+    d.status = SeedStatus::Deferred;
+    d.probe = from_key;
+    return d;
+  }
+  const RayHit run = castRay(map, from, from + surface.normal * cfg.max_extension, unknown_blocks);
+  d.position = from + surface.normal * (0.5 * run.distance);
+  // A run cut short by unknown space may grow once that space is observed, moving the candidate
+  // out of covered space: such candidates wait instead of being dropped.
+  const bool cut_by_unknown = run.blocked && run.hit_state == VoxelState::Unknown;
+  const Vec3i cut_key = map.keyOf(run.point + surface.normal * (1e-3 * map.resolution()));
+  auto dropOrDefer = [&](SeedStatus drop) {
+    d.status = cut_by_unknown ? SeedStatus::Deferred : drop;
+    d.probe = cut_key;
+    return d;
+  };
+  if (graph.hasCenterWithin(d.position, cfg.min_center_distance)) return dropOrDefer(SeedStatus::TooClose);
+  if (graph.containingNode(d.position) >= 0) return dropOrDefer(SeedStatus::InsideExisting);
+  const Vec3i key = map.keyOf(d.position);
+  if (!map.inWindow(key)) {
+    d.status = SeedStatus::Deferred;
+    d.probe = key;
+    return d;
+  }
+  Vec3i bad;
+  VoxelState bad_state;
+  if (findUnsafeVoxel(map, d.position, cfg.robot_radius, unknown_blocks, &bad, &bad_state)) {
+    if (bad_state == VoxelState::Unknown) {
+      d.status = SeedStatus::Deferred;
+      d.probe = bad;
+    } else {
+      d.status = SeedStatus::Unsafe;
+    }
+    return d;
+  }
+  d.status = SeedStatus::Accepted;
+  return d;
+}
+
+}  // namespace ussnav
