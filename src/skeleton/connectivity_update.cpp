@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ussnav/core/error.hpp"
 #include "ussnav/core/timing.hpp"
 #include "ussnav/skeleton/connectivity_graph.hpp"
 #include "ussnav/skeleton/expansion.hpp"
@@ -10,8 +11,15 @@
 
 namespace ussnav {
 
+namespace {
+// Grid searches for loop-closure edges per new node (candidates are tried nearest first).
+constexpr int kMaxLoopAttempts = 2;
+}  // namespace
+
 GraphUpdateStats ConnectivityGraph::update(const OccupancyMap& map, const Vec3& uav_position,
                                            double time) {
+  if (!uav_position.allFinite() || !std::isfinite(time))
+    throw InputError("", "uav_position", "expected a finite position and time for the graph update");
   const Stopwatch watch;
   ++frame_;
   GraphUpdateStats st;
@@ -60,7 +68,7 @@ GraphUpdateStats ConnectivityGraph::update(const OccupancyMap& map, const Vec3& 
     ++st.surfaces_popped;
     const SeedDecision d = findNewExpandSeed(s, map, *this, cfg_);
     if (d.status == SeedStatus::Accepted) {
-      if (addNode(map, d.position, s.node, {s.nexus, d.position}, true, time, st) < 0) ++st.dropped;
+      if (addNode(map, d.position, s.node, {d.from, d.position}, true, time, st) < 0) ++st.dropped;
     } else if (d.status == SeedStatus::Deferred) {
       deferred_.push_back({std::move(s), d.probe});
       ++st.deferred;
@@ -90,6 +98,12 @@ int ConnectivityGraph::addNode(const OccupancyMap& map, const Vec3& seed, int pa
       !findUnsafeVoxel(map, c, cfg_.robot_radius, false, nullptr, nullptr) &&
       lineOfSight(map, seed, c, unknown_blocks))
     center = c;
+
+  // The centroid may have drifted next to an existing centre: the space is covered already.
+  if (require_parent_link && hasCenterWithin(center, cfg_.min_center_distance)) {
+    ++stats.rejected_polyhedra;
+    return -1;
+  }
 
   // The kinematic link crosses the parent's polyhedron and the extension run, both checked free
   // when they were made; the parent's centre may have left the window since, so only obstacles
@@ -154,6 +168,7 @@ void ConnectivityGraph::updateTopology(const OccupancyMap& map, int id, GraphUpd
   const std::vector<int> candidates = nodesWithin(center, std::max(cfg_.visibility_radius, reach + max_reach_));
   std::unordered_map<int, double> route;  // graph distances from id, computed when first needed
   bool route_ready = false;
+  int loop_attempts = 0;
   for (int other : candidates) {
     if (other == id || edgeBetween(id, other) >= 0) continue;
     const ScgNode& o = nodes_[size_t(other)];
@@ -174,6 +189,8 @@ void ConnectivityGraph::updateTopology(const OccupancyMap& map, int id, GraphUpd
       route_ready = true;
     }
     if (route.count(other)) continue;
+    // Failed searches fill their whole ellipsoid (~1 ms); the nearest few candidates suffice.
+    if (loop_attempts++ >= kMaxLoopAttempts) continue;
     const auto path = gridPath(map, o.center, center, cfg_.loop_path_max, unknown_blocks);
     if (!path) continue;
     std::vector<Vec3> via(path->begin() + 1, path->end() - 1);

@@ -94,13 +94,17 @@ bool findUnsafeVoxel(const OccupancyMap& map, const Vec3& p, double radius, bool
   return have_unknown;
 }
 
-SeedDecision findNewExpandSeed(const BoundarySurface& surface, const OccupancyMap& map,
-                               const ConnectivityGraph& graph, const SkeletonConfig& cfg) {
+namespace {
+
+// One candidate: a run from `from` along unit `dir`, at most max_extension, stopped by obstacles
+// (and unknown space when it is contact); the candidate is the middle of the run.
+SeedDecision runCandidate(const Vec3& from, const Vec3& dir, const OccupancyMap& map,
+                          const ConnectivityGraph& graph, const SkeletonConfig& cfg) {
   SeedDecision d;
   const bool unknown_blocks = cfg.unknown_is_contact;
-  const Vec3 from = surface.nexus;
   const Vec3i from_key = map.keyOf(from);
   d.position = from;
+  d.from = from;
   if (!map.inWindow(from_key)) {
     d.status = SeedStatus::Deferred;
     d.probe = from_key;
@@ -113,17 +117,18 @@ SeedDecision findNewExpandSeed(const BoundarySurface& surface, const OccupancyMa
     d.probe = from_key;
     return d;
   }
-  const RayHit run = castRay(map, from, from + surface.normal * cfg.max_extension, unknown_blocks);
-  d.position = from + surface.normal * (0.5 * run.distance);
+  const RayHit run = castRay(map, from, from + dir * cfg.max_extension, unknown_blocks);
+  d.position = from + dir * (0.5 * run.distance);
   // A run cut short by unknown space may grow once that space is observed, moving the candidate
   // out of covered space: such candidates wait instead of being dropped.
   const bool cut_by_unknown = run.blocked && run.hit_state == VoxelState::Unknown;
-  const Vec3i cut_key = map.keyOf(run.point + surface.normal * (1e-3 * map.resolution()));
+  const Vec3i cut_key = map.keyOf(run.point + dir * (1e-3 * map.resolution()));
   auto dropOrDefer = [&](SeedStatus drop) {
     d.status = cut_by_unknown ? SeedStatus::Deferred : drop;
     d.probe = cut_key;
     return d;
   };
+  // Graph checks first: a candidate in covered space is dropped whatever the map says.
   if (graph.hasCenterWithin(d.position, cfg.min_center_distance)) return dropOrDefer(SeedStatus::TooClose);
   if (graph.containingNode(d.position) >= 0) return dropOrDefer(SeedStatus::InsideExisting);
   const Vec3i key = map.keyOf(d.position);
@@ -145,6 +150,34 @@ SeedDecision findNewExpandSeed(const BoundarySurface& surface, const OccupancyMa
   }
   d.status = SeedStatus::Accepted;
   return d;
+}
+
+}  // namespace
+
+SeedDecision findNewExpandSeed(const BoundarySurface& surface, const OccupancyMap& map,
+                               const ConnectivityGraph& graph, const SkeletonConfig& cfg) {
+  const SeedDecision primary = runCandidate(surface.nexus, surface.normal, map, graph, cfg);
+  if (primary.status == SeedStatus::Accepted || primary.status == SeedStatus::Deferred) return primary;
+  if (surface.node < 0 || surface.node >= int(graph.size()) || cfg.seed_retries <= 0) return primary;
+  // The nexus of a cluster that spans a wall and a door lies on the wall. Free vertices mark
+  // where space does continue: retry along the owner's rays through the ones nearest the nexus.
+  const ScgNode& owner = graph.node(surface.node);
+  const Polyhedron& p = owner.polyhedron;
+  std::vector<std::pair<double, int>> free_verts;
+  for (int f : surface.faces)
+    for (int v : p.faces[size_t(f)])
+      if (p.kinds[size_t(v)] == VertexKind::Free)
+        free_verts.emplace_back((p.points[size_t(v)] - surface.nexus).norm(), v);
+  std::sort(free_verts.begin(), free_verts.end());
+  free_verts.erase(std::unique(free_verts.begin(), free_verts.end()), free_verts.end());
+  int tries = 0;
+  for (const auto& [dist, v] : free_verts) {
+    if (tries++ >= cfg.seed_retries) break;
+    const Vec3 dir = (p.points[size_t(v)] - owner.seed).normalized();
+    const SeedDecision alt = runCandidate(p.points[size_t(v)], dir, map, graph, cfg);
+    if (alt.status == SeedStatus::Accepted) return alt;
+  }
+  return primary;
 }
 
 }  // namespace ussnav

@@ -1,7 +1,10 @@
 #include "support/dense_grid.hpp"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
+
+#include "ussnav/skeleton/sphere_sampler.hpp"
 
 namespace ussnav::test {
 
@@ -52,6 +55,10 @@ void DenseGrid::fill(const Aabb& box, VoxelState s) {
   for (int z = a.z(); z <= b.z(); ++z)
     for (int y = a.y(); y <= b.y(); ++y)
       for (int x = a.x(); x <= b.x(); ++x) cells_[index(Vec3i(x, y, z))] = uint8_t(s);
+}
+
+VoxelState DenseGrid::stored(const Vec3i& key) const {
+  return inGrid(key) ? VoxelState(cells_[index(key)]) : VoxelState::Unknown;
 }
 
 void DenseGrid::set(const Vec3i& key, VoxelState s) {
@@ -139,6 +146,34 @@ FloorScene roomFloor(int nx, int ny, double room_size, double height, double res
     }
   for (const Aabb& d : s.doors) s.grid.carve(d);
   return s;
+}
+
+void observe(const DenseGrid& truth, DenseGrid& known, const Vec3& origin, double range, int rays) {
+  const double step = truth.resolution() / 3.0;
+  for (const Vec3& dir : fibonacciSphere(rays)) {
+    Vec3i last(INT32_MIN, INT32_MIN, INT32_MIN);
+    for (double t = 0.0; t <= range; t += step) {
+      const Vec3i k = truth.keyOf(origin + dir * t);
+      if (k == last) continue;
+      last = k;
+      const VoxelState s = truth.stored(k);
+      if (s == VoxelState::Unknown) break;  // outside the world
+      known.set(k, s);
+      if (s == VoxelState::Occupied) break;
+    }
+  }
+}
+
+std::vector<Vec3> samplePolyline(const std::vector<Vec3>& waypoints, double step) {
+  std::vector<Vec3> out;
+  if (waypoints.empty()) return out;
+  out.push_back(waypoints.front());
+  for (size_t i = 1; i < waypoints.size(); ++i) {
+    const Vec3 a = waypoints[i - 1], b = waypoints[i];
+    const int n = std::max(1, int(std::ceil((b - a).norm() / step)));
+    for (int j = 1; j <= n; ++j) out.push_back(a + (b - a) * (double(j) / n));
+  }
+  return out;
 }
 
 }  // namespace ussnav::test

@@ -33,6 +33,8 @@ class DenseGrid : public OccupancyMap {
   // Voxel count in a state (inside the window only).
   size_t count(VoxelState s) const;
   const Aabb& bounds() const { return bounds_; }
+  // The state stored for `key`, ignoring the window (Unknown outside the grid).
+  VoxelState stored(const Vec3i& key) const;
   // Keys in the window, for loops over all voxels.
   Vec3i minKey() const { return win_lo_; }
   Vec3i maxKey() const { return win_hi_; }  // inclusive
@@ -80,5 +82,12 @@ struct FloorScene {
 };
 FloorScene roomFloor(int nx, int ny, double room_size = 4.0, double height = 2.6,
                      double resolution = 0.1);
+
+// Emulates a range sensor: from `origin`, `rays` rays (Fibonacci directions) up to `range` walk
+// `truth`; the voxels they cross become Free in `known` and the voxel that stops them Occupied.
+void observe(const DenseGrid& truth, DenseGrid& known, const Vec3& origin, double range, int rays);
+
+// Points every `step` metres along the polyline through `waypoints`.
+std::vector<Vec3> samplePolyline(const std::vector<Vec3>& waypoints, double step);
 
 }  // namespace ussnav::test

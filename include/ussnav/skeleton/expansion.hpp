@@ -38,6 +38,7 @@ const char* seedStatusName(SeedStatus s);
 struct SeedDecision {
   SeedStatus status = SeedStatus::Unsafe;
   Vec3 position = Vec3::Zero();  // the candidate seed
+  Vec3 from = Vec3::Zero();      // start of the extension run (nexus or a free vertex)
   Vec3i probe = Vec3i::Zero();   // Deferred: the unknown voxel whose observation may change this
 };
 
@@ -46,6 +47,8 @@ struct SeedDecision {
 // candidate is the middle of that free run, so the new polyhedron reaches back over the opening
 // and forward to whatever ends the run. The candidate is then checked against the graph (too
 // close to a centre, inside a polyhedron) and the map (in the window, robot_radius clearance).
+// When that fails for a reason other than unknown space, up to cfg.seed_retries more runs start
+// at the surface's free vertices (nearest the nexus first) along the owner's ray through them.
 SeedDecision findNewExpandSeed(const BoundarySurface& surface, const OccupancyMap& map,
                                const ConnectivityGraph& graph, const SkeletonConfig& cfg);
 
