@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "ussnav/skeleton/connectivity_graph.hpp"
 
@@ -9,18 +10,80 @@ namespace ussnav {
 
 namespace {
 
-// Fraction t in [0, 1] of the segment from -> to that stays inside box `w` (from is inside).
-double clipToBox(const Aabb& w, const Vec3& from, const Vec3& to) {
-  double t = 1.0;
-  const Vec3 d = to - from;
-  for (int i = 0; i < 3; ++i) {
-    if (d[i] > 0 && to[i] > w.max[i]) t = std::min(t, (w.max[i] - from[i]) / d[i]);
-    if (d[i] < 0 && to[i] < w.min[i]) t = std::min(t, (w.min[i] - from[i]) / d[i]);
-  }
-  return std::max(0.0, t);
+// Unknown voxels a seed's clearance ball may hold before the seed waits for observation:
+// the voxels of one gap of max_unknown_gap.
+int toleratedUnknownVoxels(const OccupancyMap& map, const SkeletonConfig& cfg) {
+  return int(std::floor(cfg.max_unknown_gap / map.resolution() + 1e-9));
 }
 
 }  // namespace
+
+RayHit castRayThroughGaps(const OccupancyMap& map, const Vec3& from, const Vec3& to,
+                          bool unknown_blocks, double max_gap) {
+  RayHit hit;
+  const double res = map.resolution();
+  const Vec3 d = to - from;
+  const double len = d.norm();
+  hit.point = to;
+  hit.distance = len;
+  if (len < 1e-12) return hit;
+  const Vec3 dir = d / len;
+  Vec3i key = map.keyOf(from);
+  const Vec3i end = map.keyOf(to);
+  Vec3i step;
+  Vec3 t_max, t_delta;
+  for (int i = 0; i < 3; ++i) {
+    if (dir[i] > 0) {
+      step[i] = 1;
+      t_max[i] = ((key[i] + 1) * res - from[i]) / dir[i];
+      t_delta[i] = res / dir[i];
+    } else if (dir[i] < 0) {
+      step[i] = -1;
+      t_max[i] = (key[i] * res - from[i]) / dir[i];
+      t_delta[i] = -res / dir[i];
+    } else {
+      step[i] = 0;
+      t_max[i] = std::numeric_limits<double>::infinity();
+      t_delta[i] = std::numeric_limits<double>::infinity();
+    }
+  }
+  auto stopAt = [&](double t, VoxelState st) {
+    hit.blocked = true;
+    hit.hit_state = st;
+    hit.distance = t;
+    hit.point = from + dir * t;
+    return hit;
+  };
+  bool in_gap = false;
+  double gap_start = 0.0;
+  const int max_steps = int(std::ceil(len / res)) * 3 + 3;
+  for (int s = 0; s < max_steps && key != end; ++s) {
+    int axis = 0;
+    if (t_max[1] < t_max[axis]) axis = 1;
+    if (t_max[2] < t_max[axis]) axis = 2;
+    const double t = t_max[axis];
+    if (t > len) break;
+    key[axis] += step[axis];
+    t_max[axis] += t_delta[axis];
+    if (!map.inWindow(key)) return stopAt(in_gap ? gap_start : t, VoxelState::Unknown);
+    const VoxelState st = map.state(key);
+    if (st == VoxelState::Occupied) return stopAt(t, VoxelState::Occupied);
+    if (st == VoxelState::Free) {
+      in_gap = false;
+      continue;
+    }
+    if (!unknown_blocks) continue;
+    if (!in_gap) {
+      in_gap = true;
+      gap_start = t;
+    }
+    const double t_exit = std::min({t_max[0], t_max[1], t_max[2]});
+    if (t_exit - gap_start > max_gap + 1e-9) return stopAt(gap_start, VoxelState::Unknown);
+  }
+  // Ending inside unknown space: not a hole, there is no known free space behind it.
+  if (in_gap) return stopAt(gap_start, VoxelState::Unknown);
+  return hit;
+}
 
 const char* seedStatusName(SeedStatus s) {
   switch (s) {
@@ -39,36 +102,26 @@ Polyhedron expandNewPolyhedron(const OccupancyMap& map, const Vec3& seed,
   std::vector<VertexKind> kinds;
   pts.reserve(directions.size());
   kinds.reserve(directions.size());
-  const Aabb window = map.window();
   for (const Vec3& dir : directions) {
-    Vec3 end = seed + dir * cfg.max_radius;
-    VertexKind kind = VertexKind::Free;
-    if (!cfg.unknown_is_contact) {
-      // Unknown voxels are passable, but nothing is known beyond the window: stop at its edge.
-      const double t = clipToBox(window, seed, end);
-      if (t < 1.0) {
-        end = seed + (end - seed) * t;
-        kind = VertexKind::Unknown;
-      }
-    }
-    const RayHit hit = castRay(map, seed, end, cfg.unknown_is_contact);
+    const Vec3 end = seed + dir * cfg.max_radius;
+    const RayHit hit = castRayThroughGaps(map, seed, end, cfg.unknown_is_contact, cfg.max_unknown_gap);
     if (hit.blocked) {
       pts.push_back(hit.point);
       kinds.push_back(hit.hit_state == VoxelState::Occupied ? VertexKind::Obstacle : VertexKind::Unknown);
     } else {
       pts.push_back(end);
-      kinds.push_back(kind);
+      kinds.push_back(VertexKind::Free);
     }
   }
   return buildPolyhedron(std::move(pts), std::move(kinds));
 }
 
 bool findUnsafeVoxel(const OccupancyMap& map, const Vec3& p, double radius, bool unknown_unsafe,
-                     Vec3i* key, VoxelState* state) {
+                     Vec3i* key, VoxelState* state, int unknown_tolerated) {
   const double res = map.resolution();
   const Vec3i c = map.keyOf(p);
   const int n = int(std::ceil(radius / res));
-  bool have_unknown = false;
+  int unknown = 0;
   Vec3i unknown_key = c;
   for (int dz = -n; dz <= n; ++dz)
     for (int dy = -n; dy <= n; ++dy)
@@ -82,16 +135,12 @@ bool findUnsafeVoxel(const OccupancyMap& map, const Vec3& p, double radius, bool
           if (state) *state = st;
           return true;  // an obstacle decides: no need to look for unknown voxels
         }
-        if (unknown_unsafe && st == VoxelState::Unknown && !have_unknown) {
-          have_unknown = true;
-          unknown_key = k;
-        }
+        if (unknown_unsafe && st == VoxelState::Unknown && unknown++ == 0) unknown_key = k;
       }
-  if (have_unknown) {
-    if (key) *key = unknown_key;
-    if (state) *state = VoxelState::Unknown;
-  }
-  return have_unknown;
+  if (unknown <= unknown_tolerated) return false;
+  if (key) *key = unknown_key;
+  if (state) *state = VoxelState::Unknown;
+  return true;
 }
 
 namespace {
@@ -117,7 +166,8 @@ SeedDecision runCandidate(const Vec3& from, const Vec3& dir, const OccupancyMap&
     d.probe = from_key;
     return d;
   }
-  const RayHit run = castRay(map, from, from + dir * cfg.max_extension, unknown_blocks);
+  const RayHit run = castRayThroughGaps(map, from, from + dir * cfg.max_extension, unknown_blocks,
+                                       cfg.max_unknown_gap);
   d.position = from + dir * (0.5 * run.distance);
   // A run cut short by unknown space may grow once that space is observed, moving the candidate
   // out of covered space: such candidates wait instead of being dropped.
@@ -139,7 +189,8 @@ SeedDecision runCandidate(const Vec3& from, const Vec3& dir, const OccupancyMap&
   }
   Vec3i bad;
   VoxelState bad_state;
-  if (findUnsafeVoxel(map, d.position, cfg.robot_radius, unknown_blocks, &bad, &bad_state)) {
+  if (findUnsafeVoxel(map, d.position, cfg.robot_radius, unknown_blocks, &bad, &bad_state,
+                      toleratedUnknownVoxels(map, cfg))) {
     if (bad_state == VoxelState::Unknown) {
       d.status = SeedStatus::Deferred;
       d.probe = bad;

@@ -164,3 +164,46 @@ TEST(FindUnsafeVoxel, ReportsObstacleBeforeUnknown) {
   EXPECT_TRUE(findUnsafeVoxel(scene.grid, Vec3(2.0, 0.2, 1.2), 0.25, true, &k, &s));
   EXPECT_EQ(s, VoxelState::Occupied);  // the wall wins over the unknown voxels
 }
+
+TEST(CastRayThroughGaps, PassesSensorHolesButNotUnexploredSpace) {
+  CorridorScene scene = corridor(10.0, 1.2, 2.4);
+  const Vec3 a(0.55, 0.65, 1.25), b(5.55, 0.65, 1.25);
+  // One unknown voxel on the way (a hole) is passed when up to 0.2 m gaps are tolerated.
+  scene.grid.set(scene.grid.keyOf(Vec3(2.05, 0.65, 1.25)), VoxelState::Unknown);
+  RayHit h = castRayThroughGaps(scene.grid, a, b, true, 0.2);
+  EXPECT_FALSE(h.blocked);
+  h = castRayThroughGaps(scene.grid, a, b, true, 0.0);
+  ASSERT_TRUE(h.blocked);
+  EXPECT_EQ(h.hit_state, VoxelState::Unknown);
+  EXPECT_NEAR(h.point.x(), 2.0, 1e-9);
+  // Three unknown voxels in a row (0.3 m) are unexplored space: stop where they begin.
+  scene.grid.hide(box(Vec3(3.0, 0, 0), Vec3(3.3, 1.2, 2.4)));
+  h = castRayThroughGaps(scene.grid, a, b, true, 0.2);
+  ASSERT_TRUE(h.blocked);
+  EXPECT_NEAR(h.point.x(), 3.0, 1e-9);
+  // Unknown up to the end of the segment is not a hole either.
+  h = castRayThroughGaps(scene.grid, a, Vec3(3.15, 0.65, 1.25), true, 0.2);
+  ASSERT_TRUE(h.blocked);
+  EXPECT_NEAR(h.point.x(), 3.0, 1e-9);
+  // Unknown passable: only obstacles and the window edge stop the ray.
+  EXPECT_FALSE(castRayThroughGaps(scene.grid, a, b, false, 0.0).blocked);
+  h = castRayThroughGaps(scene.grid, a, Vec3(12.0, 0.65, 1.25), false, 0.0);
+  ASSERT_TRUE(h.blocked);
+  EXPECT_EQ(h.hit_state, VoxelState::Occupied);
+  EXPECT_NEAR(h.point.x(), 10.0, 1e-9);
+  scene.grid.setWindow(box(Vec3(-1, -1, -1), Vec3(4.5, 2, 3)));
+  h = castRayThroughGaps(scene.grid, a, b, false, 0.0);
+  ASSERT_TRUE(h.blocked);
+  EXPECT_EQ(h.hit_state, VoxelState::Unknown);
+  EXPECT_NEAR(h.point.x(), 4.5, 1e-9);
+}
+
+TEST(FindUnsafeVoxel, ToleratesAFewUnknownVoxels) {
+  CorridorScene scene = corridor(10.0, 1.2, 2.4);
+  const Vec3 p(2.05, 0.65, 1.25);
+  scene.grid.set(scene.grid.keyOf(p + Vec3(0.1, 0, 0)), VoxelState::Unknown);
+  scene.grid.set(scene.grid.keyOf(p + Vec3(0, 0.1, 0)), VoxelState::Unknown);
+  EXPECT_TRUE(findUnsafeVoxel(scene.grid, p, 0.25, true, nullptr, nullptr, 0));
+  EXPECT_TRUE(findUnsafeVoxel(scene.grid, p, 0.25, true, nullptr, nullptr, 1));
+  EXPECT_FALSE(findUnsafeVoxel(scene.grid, p, 0.25, true, nullptr, nullptr, 2));
+}

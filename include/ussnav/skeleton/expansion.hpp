@@ -4,10 +4,13 @@
 // (Nexus Point of a Boundary Surface, extended outwards along its normal, then validity checks).
 // One expansion costs sphere_samples ray casts of at most max_radius plus one Qhull run.
 //
-// Unknown space: with skeleton.unknown_is_contact (default) a ray stops at the first unknown
-// voxel, so polyhedra hold only observed free space and the faces facing unknown space become
-// unknown-blocked Boundary Surfaces that are retried when the map has grown there. Otherwise rays
-// pass unknown voxels and stop only at obstacles and at the edge of the map window.
+// Unknown space: with skeleton.unknown_is_contact (default) a ray stops where unknown space
+// begins, so polyhedra hold only observed free space and the faces facing unknown space become
+// unknown-blocked Boundary Surfaces, retried when the map has grown there. A stretch of unknown
+// voxels no longer than skeleton.max_unknown_gap with known free space behind it is a hole in
+// the sensor data (sparse rays at range, dropouts), not unexplored space: rays pass it. Otherwise
+// (unknown_is_contact false) rays pass all unknown voxels. The edge of the map window always
+// stops a ray.
 
 #include <vector>
 
@@ -52,9 +55,17 @@ struct SeedDecision {
 SeedDecision findNewExpandSeed(const BoundarySurface& surface, const OccupancyMap& map,
                                const ConnectivityGraph& graph, const SkeletonConfig& cfg);
 
+// Walks from `from` to `to` like castRay, but: obstacles stop it; voxels outside the window stop
+// it (hit_state Unknown); unknown voxels stop it only when `unknown_blocks` and the unknown
+// stretch is longer than `max_gap` or runs to the end of the segment — then it stops where the
+// stretch begins. The start voxel is not tested.
+RayHit castRayThroughGaps(const OccupancyMap& map, const Vec3& from, const Vec3& to,
+                          bool unknown_blocks, double max_gap);
+
 // The first voxel within `radius` of p that is occupied (or unknown when unknown_unsafe), in a
-// fixed scan order; returns false when there is none (p is safe).
+// fixed scan order, an occupied one first; returns false when there is none (p is safe).
+// `unknown_tolerated` unknown voxels are ignored (sensor holes, see max_unknown_gap).
 bool findUnsafeVoxel(const OccupancyMap& map, const Vec3& p, double radius, bool unknown_unsafe,
-                     Vec3i* key, VoxelState* state);
+                     Vec3i* key, VoxelState* state, int unknown_tolerated = 0);
 
 }  // namespace ussnav
