@@ -141,6 +141,8 @@ struct SkeletonConfig {
   double forced_edge_weight = 0.01; // epsilon for forced links (paper)
   bool unknown_is_contact = true;   // rays stop at unknown space
   int max_expansions_per_frame = 200;
+  int seed_retries = 4;             // fallback seeds from a surface's free vertices
+  double max_unknown_gap = 0.2;     // unknown stretches up to this long are sensor holes, m
   template <class V> void visit(V& v) {
     v.field("sphere_samples", sphere_samples, 8, 2000, "points");
     v.field("max_radius", max_radius, 0.2, 10.0, "m");
@@ -154,6 +156,8 @@ struct SkeletonConfig {
     v.field("forced_edge_weight", forced_edge_weight, 0.0, 1.0, "");
     v.field("unknown_is_contact", unknown_is_contact);
     v.field("max_expansions_per_frame", max_expansions_per_frame, 1, 100000, "");
+    v.field("seed_retries", seed_retries, 0, 100, "");
+    v.field("max_unknown_gap", max_unknown_gap, 0.0, 2.0, "m");
   }
 };
 

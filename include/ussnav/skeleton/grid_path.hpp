@@ -1,0 +1,31 @@
+#pragma once
+// Short collision-free paths in an OccupancyMap: a bounded voxel A* (26-connected, only Free
+// voxels, or Free and Unknown when unknown space is allowed) for the loop-closure edges of the
+// Spatial Connectivity Graph, and line-of-sight shortcutting of polylines. The A* only visits
+// voxels with g + h <= max_length, so its cost is bounded by the ellipsoid those span
+// (a few thousand voxels for 3 m at 0.1 m).
+
+#include <optional>
+#include <vector>
+
+#include "ussnav/mapping/occupancy.hpp"
+
+namespace ussnav {
+
+// Polyline from a to b (a and b included, corners shortcut by line of sight) of length at most
+// `max_length`, or nullopt. The voxels of a and b themselves need not be free.
+std::optional<std::vector<Vec3>> gridPath(const OccupancyMap& map, const Vec3& a, const Vec3& b,
+                                          double max_length, bool unknown_blocks = true);
+
+// Greedy shortcutting: from each kept point jump to the farthest later point in line of sight.
+// Keeps the first and last point; never adds a segment that castRay reports blocked.
+std::vector<Vec3> shortcutPolyline(const OccupancyMap& map, const std::vector<Vec3>& pts,
+                                   bool unknown_blocks = true);
+
+// Sum of segment lengths.
+double polylineLength(const std::vector<Vec3>& pts);
+
+// Whether every segment of the polyline is in line of sight (see castRay).
+bool polylineClear(const OccupancyMap& map, const std::vector<Vec3>& pts, bool unknown_blocks);
+
+}  // namespace ussnav
