@@ -3,7 +3,6 @@
 #include <nanoflann.hpp>
 
 #include <algorithm>
-#include <unordered_map>
 
 #include "ussnav/core/error.hpp"
 #include "ussnav/objects/cloud.hpp"
@@ -28,11 +27,8 @@ IntegrateStats& IntegrateStats::operator+=(const IntegrateStats& o) {
 
 // Per-object bookkeeping the public Object does not show.
 struct ObjectLayer::State {
-  std::unordered_map<uint64_t, uint32_t> voxel;  // voxel key -> index into sums
-  std::vector<Vec3> sums;                        // per voxel: sum of points
-  std::vector<double> counts;                    // per voxel: number of points
+  VoxelCloud cloud;  // voxel means + neighbour index within tau: Omega(new, this)
   Embedding embedding_sum;
-  PointGrid grid;                                // cloud, cell tau: Omega(new, this)
 };
 
 // nanoflann over the object centroids, rebuilt lazily after any change. The radius search
@@ -107,7 +103,9 @@ std::vector<int> ObjectLayer::candidatesNear(const Vec3& c) {
 Association ObjectLayer::integrateCloud(const std::vector<Vec3f>& world_points, const std::string& label,
                                         double score, int anchor_node, int anchor_region, double time) {
   Association a;
-  const std::vector<Vec3f> cloud = voxelDownsample(world_points, cfg_.voxel_size);
+  VoxelCloud fresh(cfg_.voxel_size, cfg_.tau);
+  fresh.insert(world_points);
+  const std::vector<Vec3f>& cloud = fresh.points();
   if (int(cloud.size()) < cfg_.min_points) {
     a.rejected = true;
     return a;
@@ -117,13 +115,25 @@ Association ObjectLayer::integrateCloud(const std::vector<Vec3f>& world_points, 
   for (const auto& p : cloud) centroid += p.cast<double>();
   centroid /= double(cloud.size());
 
+  Aabb reach;  // the new cloud's box grown by tau: objects outside it cannot overlap at all
+  for (const auto& p : cloud) reach.extend(p.cast<double>());
+  reach.min.array() -= cfg_.tau;
+  reach.max.array() += cfg_.tau;
+
   const std::vector<int> cands = candidatesNear(centroid);
   a.candidates = int(cands.size());
-  std::vector<double> cosines(cands.size()), forward(cands.size());
+  std::vector<double> cosines(cands.size()), forward(cands.size(), 0.0);
   int best = -1;
   for (size_t k = 0; k < cands.size(); ++k) {
+    const Aabb& box = objects_[cands[k]].box;
+    const bool touching = (box.min.array() <= reach.max.array()).all() && (reach.min.array() <= box.max.array()).all();
+    if (!touching) continue;  // overlap 0: neither rule can hold
     cosines[k] = cosineSimilarity(v, objects_[cands[k]].embedding);
-    forward[k] = geometricOverlap(cloud, state_[cands[k]].grid);
+    // Only the rule this candidate can still meet matters: a semantic one needs the small
+    // overlap, any other the geometric one (exact above it, cut short below).
+    const bool semantic = cosines[k] > cfg_.semantic_cos;
+    forward[k] = geometricOverlap(cloud, state_[cands[k]].cloud,
+                                  semantic ? std::min(cfg_.semantic_overlap, cfg_.geometric_overlap) : cfg_.geometric_overlap);
     if (cosines[k] > cfg_.semantic_cos && forward[k] > cfg_.semantic_overlap &&
         (best < 0 || forward[k] > forward[best] || (forward[k] == forward[best] && cosines[k] > cosines[best])))
       best = int(k);
@@ -131,12 +141,10 @@ Association ObjectLayer::integrateCloud(const std::vector<Vec3f>& world_points, 
   if (best >= 0) {
     a.kind = MatchKind::kSemantic;
   } else {
-    PointGrid mine;
     double best_score = -1;
     for (size_t k = 0; k < cands.size(); ++k) {
       if (forward[k] <= cfg_.geometric_overlap) continue;
-      if (mine.size() == 0) mine.build(cloud, cfg_.tau);
-      const double backward = geometricOverlap(objects_[cands[k]].cloud, mine);
+      const double backward = geometricOverlap(objects_[cands[k]].cloud, fresh, cfg_.geometric_overlap);
       if (backward > cfg_.geometric_overlap && std::min(forward[k], backward) > best_score) {
         best_score = std::min(forward[k], backward);
         best = int(k);
@@ -167,9 +175,7 @@ void ObjectLayer::create(const std::vector<Vec3f>& cloud, const std::string& lab
   o.first_seen = time;
   o.voxel_size = cfg_.voxel_size;
   objects_.push_back(std::move(o));
-  State s;
-  s.embedding_sum = Embedding::Zero(v.size());
-  state_.push_back(std::move(s));
+  state_.push_back(State{VoxelCloud(cfg_.voxel_size, cfg_.tau), Embedding::Zero(v.size())});
   merge(objects_.size() - 1, cloud, label, score, v, time);
 }
 
@@ -177,49 +183,18 @@ void ObjectLayer::merge(size_t index, const std::vector<Vec3f>& cloud, const std
                         const Embedding& v, double time) {
   Object& o = objects_[index];
   State& s = state_[index];
-  for (const auto& p : cloud) {
-    auto [it, fresh] = s.voxel.try_emplace(voxelKey(p, o.voxel_size), uint32_t(s.sums.size()));
-    if (fresh) {
-      s.sums.push_back(p.cast<double>());
-      s.counts.push_back(1.0);
-    } else {
-      s.sums[it->second] += p.cast<double>();
-      s.counts[it->second] += 1.0;
-    }
-  }
+  s.cloud.insert(cloud);
   // Bounded memory per object: coarsen the voxel grid until the cloud fits.
-  while (int(s.sums.size()) > cfg_.max_points_per_object) {
-    o.voxel_size *= 2;
-    std::unordered_map<uint64_t, uint32_t> voxel;
-    std::vector<Vec3> sums;
-    std::vector<double> counts;
-    for (size_t i = 0; i < s.sums.size(); ++i) {
-      const Vec3f mean = (s.sums[i] / s.counts[i]).cast<float>();
-      auto [it, fresh] = voxel.try_emplace(voxelKey(mean, o.voxel_size), uint32_t(sums.size()));
-      if (fresh) {
-        sums.push_back(s.sums[i]);
-        counts.push_back(s.counts[i]);
-      } else {
-        sums[it->second] += s.sums[i];
-        counts[it->second] += s.counts[i];
-      }
-    }
-    s.voxel.swap(voxel);
-    s.sums.swap(sums);
-    s.counts.swap(counts);
-  }
-
-  o.cloud.resize(s.sums.size());
+  while (int(s.cloud.size()) > cfg_.max_points_per_object) s.cloud.coarsen();
+  o.voxel_size = s.cloud.voxelSize();
+  o.cloud = s.cloud.points();
   o.box = Aabb();
   Vec3 c = Vec3::Zero();
-  for (size_t i = 0; i < s.sums.size(); ++i) {
-    const Vec3 p = s.sums[i] / s.counts[i];
-    o.cloud[i] = p.cast<float>();
-    o.box.extend(p);
-    c += p;
+  for (const auto& p : o.cloud) {
+    o.box.extend(p.cast<double>());
+    c += p.cast<double>();
   }
   o.centroid = c / double(std::max<size_t>(1, o.cloud.size()));
-  s.grid.build(o.cloud, cfg_.tau);
 
   // A zero score would erase the observation from the label vote and embedding; count it a little.
   const double w = std::max(score, 1e-3);

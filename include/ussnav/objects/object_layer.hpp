@@ -1,12 +1,14 @@
 #pragma once
 // The object layer of the scene graph (paper Sec. IV-C): detections become world-frame clouds
-// and are associated with existing objects whose box lies within association_radius of the new
-// cloud's centroid (kd-tree over object centroids). Priority: semantic match (cosine >
-// semantic_cos and Omega(new, old) > semantic_overlap), else geometric match (Omega > geometric_
-// overlap both ways), else a new object. Each object is anchored to the graph node where the UAV
-// was when it was first seen and to that node's region. Cost per detection: back-projection of
-// its mask, plus O(|cloud|) per candidate (hash-grid overlap), plus a kd-tree rebuild over
-// object centroids when objects changed (O(n log n), n = objects).
+// and are associated with the existing objects near them. Candidates: objects whose box comes
+// within association_radius of the new cloud's centroid (a nanoflann kd-tree over centroids,
+// radius grown by the largest object, then the exact box test; for small objects this is the
+// paper's centroid query, for a long sofa seen from one end it still finds the sofa). Priority:
+// semantic match (cosine > semantic_cos and Omega(new, old) > semantic_overlap), else geometric
+// match (Omega > geometric_overlap both ways), else a new object. Each object is anchored to the
+// graph node where the UAV was when it was first seen and to that node's region. Not
+// thread-safe. Cost per detection: back-projection of its mask, O(|cloud|) per candidate whose
+// box touches the new cloud, and a kd-tree rebuild over centroids after a change (n log n).
 
 #include <functional>
 #include <memory>

@@ -9,7 +9,8 @@
 //    Words WordNet lacks fall back to character 3-grams in the same space.
 //  - "ngram": character 3-grams only (no WordNet), for tests and as the fallback.
 // An ONNX (Mobile-CLIP) backend comes later behind the same interface. encode() is
-// thread-safe and cached per label: a hit is a hash lookup, a miss costs ~20 x dim flops.
+// thread-safe and cached per label: a hit is a hash lookup, a miss draws one random direction
+// per hypernym (~15 x dim numbers, tens of microseconds) after a WordNet lookup.
 
 #include <Eigen/Core>
 #include <memory>
