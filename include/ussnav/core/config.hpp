@@ -161,14 +161,64 @@ struct SkeletonConfig {
   }
 };
 
+struct PerceptionConfig {
+  std::string detector = "oracle";      // oracle (simulator instance ids); onnx comes later
+  double miss_prob = 0.1;               // oracle: chance an instance is not reported in a frame
+  double confusion_prob = 0.05;         // oracle: chance its label is swapped for a similar one
+  int erosion_px = 1;                   // oracle: mask erosion, pixels (detector masks are tight)
+  int min_pixels = 20;                  // oracle: smaller masks are not reported
+  double max_range = 4.5;               // oracle: masks whose median depth is farther are dropped, m
+  double score = 0.9;                   // oracle: confidence reported with every detection
+  std::string text_encoder = "wordnet"; // wordnet (built-in stand-in for Mobile-CLIP) | ngram
+  int embedding_dim = 512;              // text embedding size (Mobile-CLIP: 512)
+  template <class V> void visit(V& v) {
+    v.choice("detector", detector, {"oracle"});
+    v.field("miss_prob", miss_prob, 0.0, 1.0, "probability");
+    v.field("confusion_prob", confusion_prob, 0.0, 1.0, "probability");
+    v.field("erosion_px", erosion_px, 0, 50, "pixels");
+    v.field("min_pixels", min_pixels, 1, 1000000, "pixels");
+    v.field("max_range", max_range, 0.1, 100.0, "m");
+    v.field("score", score, 0.0, 1.0, "confidence");
+    v.choice("text_encoder", text_encoder, {"wordnet", "ngram"});
+    v.field("embedding_dim", embedding_dim, 16, 4096, "dimensions");
+  }
+};
+
+struct ObjectsConfig {
+  double association_radius = 2.0;  // candidates within this of the new centroid, m (paper)
+  double semantic_cos = 0.75;       // semantic match: cosine above this (paper)
+  double semantic_overlap = 0.1;    // ... and overlap new->old above this (paper)
+  double geometric_overlap = 0.5;   // geometric match: overlap above this both ways (paper)
+  double tau = 0.1;                 // point match distance in the overlap, m (paper's tau)
+  double voxel_size = 0.05;         // object clouds are voxel-downsampled to this, m
+  int min_points = 10;              // observations with fewer points are rejected
+  int max_points_per_object = 5000; // above this an object's cloud is coarsened (voxel x2)
+  int min_observations_to_confirm = 2;  // objects seen fewer times are tentative
+  template <class V> void visit(V& v) {
+    v.field("association_radius", association_radius, 0.1, 20.0, "m");
+    v.field("semantic_cos", semantic_cos, -1.0, 1.0, "cosine");
+    v.field("semantic_overlap", semantic_overlap, 0.0, 1.0, "fraction");
+    v.field("geometric_overlap", geometric_overlap, 0.0, 1.0, "fraction");
+    v.field("tau", tau, 0.005, 2.0, "m");
+    v.field("voxel_size", voxel_size, 0.005, 1.0, "m");
+    v.field("min_points", min_points, 1, 1000000, "points");
+    v.field("max_points_per_object", max_points_per_object, 10, 10000000, "points");
+    v.field("min_observations_to_confirm", min_observations_to_confirm, 1, 1000, "observations");
+  }
+};
+
 struct Config {
   SimConfig sim;
   MappingConfig mapping;
   SkeletonConfig skeleton;
+  PerceptionConfig perception;
+  ObjectsConfig objects;
   template <class V> void visit(V& v) {
     v.section("sim", sim);
     v.section("mapping", mapping);
     v.section("skeleton", skeleton);
+    v.section("perception", perception);
+    v.section("objects", objects);
   }
 };
 

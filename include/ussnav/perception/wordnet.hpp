@@ -1,0 +1,77 @@
+#pragma once
+// Offline word knowledge from Princeton WordNet 3.0 (Debian `wordnet-base` data read through the
+// `wordnet-dev` C library): the noun sense an object label most likely means indoors, its
+// synonyms, gloss and hypernym chain. The C library keeps global state and is not thread-safe,
+// so every call here takes one process-wide mutex. The database is opened lazily on first use;
+// when it is missing, available() is false, a warning is logged once and every lookup answers
+// "unknown" (callers fall back, nothing throws). Results are cached per synset: after warm-up a
+// lookup is a hash probe; a cold one reads a few lines of data.noun.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ussnav::wordnet {
+
+// One ancestor of a synset (itself included) with its depth, root ("entity") = 1.
+struct Ancestor {
+  long offset = 0;  // byte offset in data.noun: the synset's identity
+  int depth = 1;
+};
+
+// A noun synset chosen for a label.
+struct Sense {
+  long offset = 0;                  // identity: equal offsets = synonyms ("couch" == "sofa")
+  std::string lemma;                // the synset's first word, spaces for underscores
+  std::vector<std::string> lemmas;  // all its words
+  std::string gloss;                // definition without the usage examples
+  std::string lexfile;              // e.g. "noun.artifact"
+  int depth = 1;                    // shortest hypernym path to the root, root = 1
+  std::vector<Ancestor> ancestors;  // transitive hypernyms (and instance hypernyms) and itself
+};
+
+// Opens the database once (WNSEARCHDIR, else /usr/share/wordnet). Thread-safe.
+bool available();
+// Where the database was looked for (for messages).
+std::filesystem::path searchDir();
+// Closes and re-opens the database from `dir` (tests of the missing-data fallback; rarely
+// needed otherwise). Returns available().
+bool reopen(const std::filesystem::path& dir);
+
+// The sense of a single noun or WordNet compound ("dining_table", "chest of drawers"), after
+// morphology ("chairs" -> "chair"). Among the word's senses the first in WordNet's frequency
+// order wins within the best tier: (1) artifacts that are not rooms, buildings or building
+// complexes ("table" -> furniture, not a data table; "toilet" -> the fixture, not the room),
+// (2) other physical entities ("plant" -> flora, not a factory), (3) rooms and buildings
+// ("kitchen"), (4) anything else. Senses that are only a proper name ("Monitor", a ship) come
+// last. nullopt when the word is not a WordNet noun.
+std::optional<Sense> lookupNoun(const std::string& word);
+// The sense of a free-form object label: lower-cased, CamelCase and '_'/'-' split into words;
+// the whole compound is tried first ("dining table" -> dining_table, "ArmChair" -> armchair),
+// then the last word (the head noun: "office chair" -> chair). nullopt when none is known.
+std::optional<Sense> lookupLabel(const std::string& label);
+// lookupLabel() plus the words before the head noun when only the head was found
+// ("office chair" -> the sense of "chair", modifiers {"office"}; empty for a compound hit).
+struct LabelSense {
+  Sense sense;
+  std::vector<std::string> modifiers;
+};
+std::optional<LabelSense> resolveLabel(const std::string& label);
+
+// Tokens of a label as lookupLabel() splits it: "DiningTable" -> {"dining", "table"}.
+std::vector<std::string> labelTokens(const std::string& label);
+
+// Definition text of the label's sense, e.g. glossOf("bed") = "a piece of furniture that
+// provides a place to sleep". Empty when unknown.
+std::string glossOf(const std::string& label);
+// First lemma of each hypernym on the shortest path to the root, nearest first:
+// hypernymsOf("armchair") = {"chair", "seat", "furniture", ..., "entity"}. Empty when unknown.
+std::vector<std::string> hypernymsOf(const std::string& label);
+// All words of the label's synset ("couch" -> {"sofa", "couch", "lounge"}). Empty when unknown.
+std::vector<std::string> synonymsOf(const std::string& label);
+// Wu-Palmer similarity of the two labels' senses, 2 d(lcs) / (d(a) + d(b)), in [0, 1];
+// nullopt when either is unknown. The reference the built-in text encoder approximates.
+std::optional<double> wuPalmer(const std::string& a, const std::string& b);
+
+}  // namespace ussnav::wordnet

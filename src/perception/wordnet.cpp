@@ -1,0 +1,422 @@
+#include "ussnav/perception/wordnet.hpp"
+
+#include <spdlog/spdlog.h>
+#include <wn.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <functional>
+#include <mutex>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace ussnav::wordnet {
+
+namespace {
+
+// The library prints errors through this hook; route them to the debug log instead of stderr.
+int quietMessage(char* msg) {
+  spdlog::debug("wordnet: {}", msg ? msg : "");
+  return -1;
+}
+
+struct SynsetData {
+  std::vector<std::string> words;
+  std::string gloss;
+  int fnum = 0;
+  std::vector<long> hypernyms;
+};
+
+// All library access and every cache live behind one mutex (the C library uses globals).
+class Db {
+ public:
+  static Db& get() {
+    static Db db;
+    return db;
+  }
+
+  std::mutex mutex;
+
+  bool openLocked() {
+    if (tried_) return open_;
+    tried_ = true;
+    if (dir_.empty()) {
+      const char* env = std::getenv("WNSEARCHDIR");
+      dir_ = (env && *env) ? std::filesystem::path(env) : std::filesystem::path("/usr/share/wordnet");
+    }
+    display_message = quietMessage;
+    std::error_code ec;
+    // wninit() reads WNSEARCHDIR; check the one file we need first for a clearer warning.
+    if (!std::filesystem::exists(dir_ / "index.noun", ec) || !std::filesystem::exists(dir_ / "data.noun", ec)) {
+      open_ = false;
+    } else {
+      ::setenv("WNSEARCHDIR", dir_.c_str(), 1);
+      open_ = (initialised_ ? re_wninit() : wninit()) == 0;
+      initialised_ = initialised_ || open_;
+    }
+    if (!open_)
+      spdlog::warn("WordNet 3.0 not found in {} (install wordnet-base or set WNSEARCHDIR); "
+                   "text embeddings fall back to character n-grams, glosses are empty",
+                   dir_.string());
+    else
+      resolveAnchorsLocked();
+    return open_;
+  }
+
+  bool reopenLocked(const std::filesystem::path& dir) {
+    tried_ = false;
+    dir_ = dir;
+    synsets_.clear();
+    depth_.clear();
+    ancestors_.clear();
+    nouns_.clear();
+    return openLocked();
+  }
+
+  const std::filesystem::path& dir() const { return dir_; }
+
+  const SynsetData& synset(long off) {
+    auto it = synsets_.find(off);
+    if (it != synsets_.end()) return it->second;
+    SynsetData d;
+    char empty[1] = {0};
+    SynsetPtr s = read_synset(NOUN, off, empty);
+    if (s) {
+      for (int i = 0; i < s->wcount; ++i) d.words.emplace_back(s->words[i]);
+      d.gloss = s->defn ? s->defn : "";
+      d.fnum = s->fnum;
+      for (int i = 0; i < s->ptrcount; ++i)
+        if ((s->ptrtyp[i] == HYPERPTR || s->ptrtyp[i] == INSTANCE) && s->ppos[i] == NOUN)
+          d.hypernyms.push_back(s->ptroff[i]);
+      free_synset(s);
+    }
+    return synsets_.emplace(off, std::move(d)).first->second;
+  }
+
+  // Shortest hypernym distance to a root, root = 1. WordNet nouns form a DAG (no cycles);
+  // the guard only protects against a corrupt database.
+  int depth(long off, int guard = 0) {
+    auto it = depth_.find(off);
+    if (it != depth_.end()) return it->second;
+    const std::vector<long> hyp = synset(off).hypernyms;
+    int d = 1;
+    if (!hyp.empty() && guard < 64) {
+      int best = 1 << 20;
+      for (long h : hyp) best = std::min(best, depth(h, guard + 1));
+      d = best + 1;
+    }
+    depth_[off] = d;
+    return d;
+  }
+
+  const std::vector<long>& ancestors(long off) {
+    auto it = ancestors_.find(off);
+    if (it != ancestors_.end()) return it->second;
+    std::vector<long> out;
+    std::unordered_set<long> seen;
+    std::vector<long> stack{off};
+    while (!stack.empty() && out.size() < 256) {
+      const long s = stack.back();
+      stack.pop_back();
+      if (!seen.insert(s).second) continue;
+      out.push_back(s);
+      for (long h : synset(s).hypernyms) stack.push_back(h);
+    }
+    return ancestors_.emplace(off, std::move(out)).first->second;
+  }
+
+  // Offsets of the senses of an exact index word (lower case, '_' for spaces), frequency order.
+  std::vector<long> senses(const std::string& word) {
+    auto it = nouns_.find(word);
+    if (it != nouns_.end()) return it->second;
+    std::vector<long> offs;
+    if (!word.empty() && word.size() < WORDBUF - 1) {
+      std::vector<char> buf(word.begin(), word.end());
+      buf.push_back('\0');
+      IndexPtr idx = index_lookup(buf.data(), NOUN);
+      if (idx) {
+        for (int i = 0; i < idx->off_cnt; ++i) offs.push_back(long(idx->offset[i]));
+        free_index(idx);
+      }
+    }
+    nouns_[word] = offs;
+    return offs;
+  }
+
+  // Base forms by WordNet morphology ("chairs" -> "chair", "mice" -> "mouse").
+  std::vector<std::string> baseForms(const std::string& word) {
+    std::vector<std::string> out;
+    if (word.empty() || word.size() >= WORDBUF - 1) return out;
+    std::vector<char> buf(word.begin(), word.end());
+    buf.push_back('\0');
+    for (char* m = morphstr(buf.data(), NOUN); m && out.size() < 8; m = morphstr(nullptr, NOUN))
+      out.emplace_back(m);
+    return out;
+  }
+
+  bool hasAncestor(long off, long anchor) {
+    if (anchor < 0) return false;
+    const auto& a = ancestors(off);
+    return std::find(a.begin(), a.end(), anchor) != a.end();
+  }
+
+  // Rooms, buildings and building complexes: what an object label should not mean.
+  bool isPlace(long off) {
+    return hasAncestor(off, room) || hasAncestor(off, building) || hasAncestor(off, complex);
+  }
+
+  long artifact = -1, physical = -1, room = -1, building = -1, complex = -1;
+
+ private:
+  void resolveAnchorsLocked() {
+    auto first = [&](const char* w) {
+      const auto s = senses(w);
+      return s.empty() ? -1L : s.front();
+    };
+    artifact = first("artifact");
+    physical = first("physical_entity");
+    room = first("room");
+    building = first("building");
+    complex = first("building_complex");
+  }
+
+  bool tried_ = false, open_ = false, initialised_ = false;
+  std::filesystem::path dir_;
+  std::unordered_map<long, SynsetData> synsets_;
+  std::unordered_map<long, int> depth_;
+  std::unordered_map<long, std::vector<long>> ancestors_;
+  std::unordered_map<std::string, std::vector<long>> nouns_;
+};
+
+std::string lower(std::string s) {
+  for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+std::string underscoresToSpaces(std::string s) {
+  std::replace(s.begin(), s.end(), '_', ' ');
+  return s;
+}
+
+// "(a piece of furniture ...; \"she sat on the bed\")" -> "a piece of furniture ..."
+// Glosses may open with their own parenthesis: "((botany) a living organism ...)".
+std::string cleanGloss(std::string g) {
+  auto trimBack = [&] {
+    while (!g.empty() && (g.back() == ' ' || g.back() == '\n')) g.pop_back();
+  };
+  while (!g.empty() && g.front() == ' ') g.erase(g.begin());
+  if (!g.empty() && g.front() == '(') g.erase(g.begin());
+  const auto quote = g.find("; \"");
+  if (quote != std::string::npos) g.erase(quote);
+  trimBack();
+  if (!g.empty() && g.back() == ')' &&
+      std::count(g.begin(), g.end(), ')') > std::count(g.begin(), g.end(), '('))
+    g.pop_back();
+  trimBack();
+  return g;
+}
+
+bool isProperOnly(const SynsetData& d, const std::string& word) {
+  bool lower_form = false, upper_form = false;
+  for (const auto& w : d.words) {
+    if (lower(w) != word) continue;
+    const bool has_upper = std::any_of(w.begin(), w.end(), [](char c) { return std::isupper(static_cast<unsigned char>(c)); });
+    (has_upper ? upper_form : lower_form) = true;
+  }
+  return upper_form && !lower_form;
+}
+
+// Picks the household sense (see lookupNoun in the header). Lower tier = better.
+long chooseSense(Db& db, const std::vector<long>& offs, const std::string& word) {
+  long best = -1;
+  int best_tier = 1 << 20;
+  for (long off : offs) {
+    int tier;
+    const bool place = db.isPlace(off);
+    if (db.hasAncestor(off, db.artifact) && !place) tier = 0;
+    else if (db.hasAncestor(off, db.physical) && !place) tier = 1;
+    else if (place) tier = 2;
+    else tier = 3;
+    if (isProperOnly(db.synset(off), word)) tier += 4;
+    if (tier < best_tier) best_tier = tier, best = off;
+  }
+  return best;
+}
+
+Sense makeSense(Db& db, long off) {
+  Sense s;
+  const SynsetData& d = db.synset(off);
+  s.offset = off;
+  for (const auto& w : d.words) s.lemmas.push_back(underscoresToSpaces(w));
+  s.lemma = s.lemmas.empty() ? std::string() : s.lemmas.front();
+  s.gloss = cleanGloss(d.gloss);
+  s.lexfile = (d.fnum >= 0 && d.fnum < MAXFNUM && lexfiles[d.fnum]) ? lexfiles[d.fnum] : "";
+  s.depth = db.depth(off);
+  const std::vector<long> anc = db.ancestors(off);  // copy: depth() may grow the caches
+  for (long a : anc) s.ancestors.push_back({a, db.depth(a)});
+  return s;
+}
+
+std::optional<Sense> lookupNounLocked(Db& db, const std::string& raw) {
+  std::string word = lower(raw);
+  for (char& c : word)
+    if (c == ' ' || c == '-') c = '_';
+  if (word.empty()) return std::nullopt;
+  std::vector<long> offs = db.senses(word);
+  if (offs.empty())
+    for (const auto& base : db.baseForms(word)) {
+      offs = db.senses(base);
+      if (!offs.empty()) {
+        word = base;
+        break;
+      }
+    }
+  if (offs.empty()) return std::nullopt;
+  return makeSense(db, chooseSense(db, offs, word));
+}
+
+struct Resolved {
+  Sense sense;
+  std::vector<std::string> modifiers;
+};
+
+std::optional<Resolved> resolveLocked(Db& db, const std::string& label) {
+  const auto tokens = labelTokens(label);
+  if (tokens.empty()) return std::nullopt;
+  if (tokens.size() > 1) {
+    std::string underscored, joined;
+    for (size_t i = 0; i < tokens.size(); ++i) {
+      underscored += (i ? "_" : "") + tokens[i];
+      joined += tokens[i];
+    }
+    for (const auto& w : {underscored, joined})
+      if (auto s = lookupNounLocked(db, w)) return Resolved{*s, {}};
+  }
+  if (auto s = lookupNounLocked(db, tokens.back()))
+    return Resolved{*s, std::vector<std::string>(tokens.begin(), tokens.end() - 1)};
+  return std::nullopt;
+}
+
+// Runs `f(db)` under the lock when the database is open; otherwise returns `fallback`.
+template <class F, class R>
+R withDb(F&& f, R fallback) {
+  Db& db = Db::get();
+  std::lock_guard<std::mutex> lock(db.mutex);
+  if (!db.openLocked()) return fallback;
+  return f(db);
+}
+
+}  // namespace
+
+bool available() {
+  Db& db = Db::get();
+  std::lock_guard<std::mutex> lock(db.mutex);
+  return db.openLocked();
+}
+
+std::filesystem::path searchDir() {
+  Db& db = Db::get();
+  std::lock_guard<std::mutex> lock(db.mutex);
+  db.openLocked();
+  return db.dir();
+}
+
+bool reopen(const std::filesystem::path& dir) {
+  Db& db = Db::get();
+  std::lock_guard<std::mutex> lock(db.mutex);
+  return db.reopenLocked(dir);
+}
+
+std::vector<std::string> labelTokens(const std::string& label) {
+  std::vector<std::string> out;
+  std::string cur;
+  auto flush = [&] {
+    if (!cur.empty()) out.push_back(lower(cur));
+    cur.clear();
+  };
+  for (size_t i = 0; i < label.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(label[i]);
+    if (!std::isalnum(c)) {
+      flush();
+      continue;
+    }
+    if (std::isupper(c) && !cur.empty()) {
+      const unsigned char prev = static_cast<unsigned char>(cur.back());
+      const bool next_lower = i + 1 < label.size() && std::islower(static_cast<unsigned char>(label[i + 1]));
+      // "armChair" | "TVStand" -> split before 'C' and before 'S'
+      if (std::islower(prev) || std::isdigit(prev) || (std::isupper(prev) && next_lower)) flush();
+    }
+    cur.push_back(char(c));
+  }
+  flush();
+  return out;
+}
+
+std::optional<Sense> lookupNoun(const std::string& word) {
+  return withDb([&](Db& db) { return lookupNounLocked(db, word); }, std::optional<Sense>{});
+}
+
+std::optional<Sense> lookupLabel(const std::string& label) {
+  return withDb(
+      [&](Db& db) -> std::optional<Sense> {
+        auto r = resolveLocked(db, label);
+        if (!r) return std::nullopt;
+        return r->sense;
+      },
+      std::optional<Sense>{});
+}
+
+std::optional<LabelSense> resolveLabel(const std::string& label) {
+  return withDb(
+      [&](Db& db) -> std::optional<LabelSense> {
+        auto r = resolveLocked(db, label);
+        if (!r) return std::nullopt;
+        return LabelSense{std::move(r->sense), std::move(r->modifiers)};
+      },
+      std::optional<LabelSense>{});
+}
+
+std::string glossOf(const std::string& label) {
+  auto s = lookupLabel(label);
+  return s ? s->gloss : std::string();
+}
+
+std::vector<std::string> hypernymsOf(const std::string& label) {
+  return withDb(
+      [&](Db& db) {
+        std::vector<std::string> out;
+        auto r = resolveLocked(db, label);
+        if (!r) return out;
+        long cur = r->sense.offset;
+        for (int guard = 0; guard < 64; ++guard) {
+          const auto hyp = db.synset(cur).hypernyms;
+          if (hyp.empty()) break;
+          long next = hyp.front();
+          for (long h : hyp)
+            if (db.depth(h) < db.depth(next)) next = h;
+          const auto& words = db.synset(next).words;
+          out.push_back(words.empty() ? std::string() : underscoresToSpaces(words.front()));
+          cur = next;
+        }
+        return out;
+      },
+      std::vector<std::string>{});
+}
+
+std::vector<std::string> synonymsOf(const std::string& label) {
+  auto s = lookupLabel(label);
+  return s ? s->lemmas : std::vector<std::string>{};
+}
+
+std::optional<double> wuPalmer(const std::string& a, const std::string& b) {
+  const auto sa = lookupLabel(a), sb = lookupLabel(b);
+  if (!sa || !sb) return std::nullopt;
+  int lcs = 0;
+  for (const auto& x : sa->ancestors)
+    for (const auto& y : sb->ancestors)
+      if (x.offset == y.offset) lcs = std::max(lcs, x.depth);
+  return 2.0 * lcs / double(sa->depth + sb->depth);
+}
+
+}  // namespace ussnav::wordnet

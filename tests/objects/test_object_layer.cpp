@@ -1,0 +1,217 @@
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "ussnav/core/random.hpp"
+#include "ussnav/objects/cloud.hpp"
+#include "ussnav/objects/object_layer.hpp"
+#include "ussnav/perception/wordnet.hpp"
+
+using namespace ussnav;
+
+namespace {
+
+// Surface samples of an axis-aligned box [lo, hi] at `step`, with optional Gaussian noise.
+std::vector<Vec3f> boxSurface(const Vec3& lo, const Vec3& hi, double step = 0.02, double noise = 0.0,
+                              uint64_t seed = 1) {
+  Rng rng(seed);
+  std::vector<Vec3f> out;
+  const Vec3 n = ((hi - lo) / step).array().ceil();
+  for (int i = 0; i <= n.x(); ++i)
+    for (int j = 0; j <= n.y(); ++j)
+      for (int k = 0; k <= n.z(); ++k) {
+        const bool face = i == 0 || j == 0 || k == 0 || i == int(n.x()) || j == int(n.y()) || k == int(n.z());
+        if (!face) continue;
+        Vec3 p = lo + Vec3(i, j, k).cwiseProduct(hi - lo).cwiseQuotient(n);
+        if (noise > 0) p += Vec3(rng.normal(0, noise), rng.normal(0, noise), rng.normal(0, noise));
+        out.push_back(p.cast<float>());
+      }
+  return out;
+}
+// Only the points with x <= x_max (a view of one end of the object).
+std::vector<Vec3f> cutX(const std::vector<Vec3f>& pts, double x_max) {
+  std::vector<Vec3f> out;
+  for (const auto& p : pts)
+    if (p.x() <= x_max) out.push_back(p);
+  return out;
+}
+
+std::vector<Vec3f> chairAt(double x, double y, uint64_t seed = 1) {
+  return boxSurface(Vec3(x - 0.25, y - 0.25, 0), Vec3(x + 0.25, y + 0.25, 0.9), 0.02, 0.005, seed);
+}
+
+ObjectLayer makeLayer(ObjectsConfig cfg = {}) {
+  return ObjectLayer(cfg, std::make_shared<WordNetTextEncoder>());
+}
+
+}  // namespace
+
+TEST(ObjectLayer, SameObjectSeenTwiceMergesSemantically) {
+  ObjectLayer layer = makeLayer();
+  const Association first = layer.integrateCloud(chairAt(1, 1, 1), "chair", 0.9, 4, 2, 0.0);
+  EXPECT_EQ(first.kind, MatchKind::kNone);
+  EXPECT_EQ(first.object_id, 1);
+  EXPECT_FALSE(layer.objects()[0].confirmed);
+  const Association second = layer.integrateCloud(chairAt(1.02, 1, 2), "chair", 0.9, 5, 3, 1.0);
+  EXPECT_EQ(second.kind, MatchKind::kSemantic);
+  EXPECT_EQ(second.object_id, 1);
+  EXPECT_GT(second.overlap_new_old, 0.9);
+  EXPECT_NEAR(second.cosine, 1.0, 1e-6);
+  ASSERT_EQ(layer.size(), 1u);
+  const Object& o = layer.objects()[0];
+  EXPECT_EQ(o.n_observations, 2);
+  EXPECT_TRUE(o.confirmed);
+  EXPECT_EQ(o.label, "chair");
+  EXPECT_NEAR((o.centroid - Vec3(1.01, 1, 0.45)).norm(), 0.0, 0.03);
+  EXPECT_NEAR(o.box.size().x(), 0.52, 0.03);
+  EXPECT_DOUBLE_EQ(o.first_seen, 0.0);
+  EXPECT_DOUBLE_EQ(o.last_seen, 1.0);
+  EXPECT_EQ(o.node_id, 4);  // anchored where first seen
+  EXPECT_EQ(o.region_id, 2);
+}
+
+TEST(ObjectLayer, SimilarLabelMergesSemantically) {
+  ObjectLayer layer = makeLayer();
+  layer.integrateCloud(chairAt(1, 1), "chair", 0.9, 0, 0, 0.0);
+  // A partial view (a third of the chair) called "armchair": cosine > 0.75, overlap > 0.1.
+  const Association a = layer.integrateCloud(cutX(chairAt(1, 1, 2), 0.9), "armchair", 0.9, 0, 0, 1.0);
+  EXPECT_EQ(a.kind, MatchKind::kSemantic);
+  EXPECT_GT(a.cosine, 0.75);
+  EXPECT_EQ(layer.size(), 1u);
+  EXPECT_EQ(layer.objects()[0].votes.size(), 2u);
+}
+
+TEST(ObjectLayer, TwoChairsSideBySideStayTwo) {
+  ObjectLayer layer = makeLayer();
+  // 0.7 m apart: 0.2 m gap between the 0.5 m chairs, twice tau.
+  for (int round = 0; round < 3; ++round) {
+    layer.integrateCloud(chairAt(1.0, 1, 10 + round), "chair", 0.9, 0, 0, round);
+    const Association a = layer.integrateCloud(chairAt(1.7, 1, 20 + round), "chair", 0.9, 0, 0, round);
+    EXPECT_EQ(a.candidates, round == 0 ? 1 : 2);  // the other chair is a candidate, never a match
+  }
+  ASSERT_EQ(layer.size(), 2u);
+  EXPECT_EQ(layer.objects()[0].n_observations, 3);
+  EXPECT_EQ(layer.objects()[1].n_observations, 3);
+  EXPECT_NEAR(layer.objects()[0].centroid.x(), 1.0, 0.02);
+  EXPECT_NEAR(layer.objects()[1].centroid.x(), 1.7, 0.02);
+}
+
+TEST(ObjectLayer, MislabelledReobservationMergesGeometrically) {
+  ObjectLayer layer = makeLayer();
+  layer.integrateCloud(chairAt(2, 3), "chair", 0.9, 0, 0, 0.0);
+  const Association a = layer.integrateCloud(chairAt(2, 3, 7), "bed", 0.9, 0, 0, 1.0);
+  EXPECT_EQ(a.kind, MatchKind::kGeometric);
+  EXPECT_LT(a.cosine, 0.75);
+  EXPECT_GT(a.overlap_new_old, 0.5);
+  EXPECT_GT(a.overlap_old_new, 0.5);
+  ASSERT_EQ(layer.size(), 1u);
+  const Object& o = layer.objects()[0];
+  EXPECT_EQ(o.label, "chair");  // tie: the first label stays
+  EXPECT_EQ(o.votes.size(), 2u);
+  layer.integrateCloud(chairAt(2, 3, 8), "bed", 0.9, 0, 0, 2.0);
+  EXPECT_EQ(layer.objects()[0].label, "bed");  // majority now
+  EXPECT_EQ(layer.objects()[0].n_observations, 3);
+}
+
+TEST(ObjectLayer, PartialViewWithOtherLabelIsANewObject) {
+  ObjectLayer layer = makeLayer();
+  const auto sofa = boxSurface(Vec3(0, 0, 0), Vec3(2.0, 0.9, 0.8));
+  layer.integrateCloud(sofa, "sofa", 0.9, 0, 0, 0.0);
+  // A cushion-sized piece of the sofa's end labelled "plant": Omega(new, old) = 1 but
+  // Omega(old, new) is small, so neither rule applies.
+  const Association a = layer.integrateCloud(cutX(sofa, 0.3), "plant", 0.9, 0, 0, 1.0);
+  EXPECT_EQ(a.kind, MatchKind::kNone);
+  EXPECT_EQ(layer.size(), 2u);
+  // The same piece labelled "couch" (a synonym) is a semantic match.
+  EXPECT_EQ(layer.integrateCloud(cutX(sofa, 0.3), "couch", 0.9, 0, 0, 2.0).kind, MatchKind::kSemantic);
+}
+
+TEST(ObjectLayer, CandidatesAreObjectsWithinTheAssociationRadius) {
+  ObjectLayer layer = makeLayer();
+  layer.integrateCloud(chairAt(0, 0), "chair", 0.9, 0, 0, 0.0);
+  EXPECT_EQ(layer.integrateCloud(chairAt(3, 0), "chair", 0.9, 0, 0, 1.0).candidates, 0);
+  EXPECT_EQ(layer.size(), 2u);
+  // A 6 m bench: a view of its far end has its centroid 2.8 m from the bench's centroid but
+  // inside its box, so the bench is a candidate and the view merges.
+  const auto bench = boxSurface(Vec3(10, 0, 0), Vec3(16, 0.5, 0.5));
+  layer.integrateCloud(bench, "bench", 0.9, 0, 0, 2.0);
+  std::vector<Vec3f> far_end;
+  for (const auto& p : bench)
+    if (p.x() >= 15.5) far_end.push_back(p);
+  const Association end = layer.integrateCloud(far_end, "bench", 0.9, 0, 0, 3.0);
+  EXPECT_EQ(end.candidates, 1);
+  EXPECT_EQ(end.kind, MatchKind::kSemantic);
+  EXPECT_EQ(layer.size(), 3u);
+}
+
+TEST(ObjectLayer, TooFewPointsAreRejected) {
+  ObjectsConfig cfg;
+  cfg.min_points = 10;
+  ObjectLayer layer = makeLayer(cfg);
+  std::vector<Vec3f> tiny;
+  for (int i = 0; i < 9; ++i) tiny.emplace_back(0.06f * i, 0, 0);  // 9 voxels
+  const Association a = layer.integrateCloud(tiny, "cup", 0.9, 0, 0, 0.0);
+  EXPECT_TRUE(a.rejected);
+  EXPECT_EQ(layer.size(), 0u);
+  // 100 points in one voxel are still one point.
+  EXPECT_TRUE(layer.integrateCloud(std::vector<Vec3f>(100, Vec3f(0.01f, 0.01f, 0.01f)), "cup", 0.9, 0, 0, 0).rejected);
+}
+
+TEST(ObjectLayer, RegionsFollowTheirNodes) {
+  ObjectLayer layer = makeLayer();
+  layer.integrateCloud(chairAt(0, 0), "chair", 0.9, 7, 3, 0.0);
+  layer.integrateCloud(chairAt(5, 0), "chair", 0.9, 8, 3, 0.0);
+  layer.integrateCloud(chairAt(0, 0, 3), "chair", 0.9, 9, 4, 1.0);  // merge: anchor unchanged
+  EXPECT_EQ(layer.find(1)->node_id, 7);
+  EXPECT_EQ(layer.find(1)->region_id, 3);
+  layer.setRegionOf([](int node) { return node == 7 ? 11 : 12; });
+  EXPECT_EQ(layer.find(1)->region_id, 11);
+  EXPECT_EQ(layer.find(2)->region_id, 12);
+  EXPECT_EQ(layer.find(3), nullptr);
+  EXPECT_EQ(layer.find(0), nullptr);
+  EXPECT_EQ(layer.find(2)->id, 2);
+}
+
+TEST(ObjectLayer, LargeCloudsAreCoarsened) {
+  ObjectsConfig cfg;
+  cfg.max_points_per_object = 300;
+  ObjectLayer layer = makeLayer(cfg);
+  layer.integrateCloud(boxSurface(Vec3(0, 0, 0), Vec3(2, 1, 1)), "sofa", 0.9, 0, 0, 0.0);
+  const Object& o = layer.objects()[0];
+  EXPECT_LE(o.cloud.size(), 300u);
+  EXPECT_GT(o.voxel_size, cfg.voxel_size);
+  EXPECT_NEAR(o.box.size().x(), 2.0, 2 * o.voxel_size);
+  // Still recognised when seen again.
+  EXPECT_EQ(layer.integrateCloud(boxSurface(Vec3(0, 0, 0), Vec3(2, 1, 1), 0.02, 0.005, 9), "sofa", 0.9, 0, 0, 1.0).kind,
+            MatchKind::kSemantic);
+}
+
+TEST(ObjectLayer, IntegrateBackProjectsDetections) {
+  // A camera at the origin looking along +x; a 20 x 20 pixel mask on a wall 2 m ahead.
+  DepthFrame f;
+  f.K = Intrinsics::fromFov(80, 60, deg2rad(87), deg2rad(58));
+  f.depth.assign(80 * 60, 2.0f);
+  f.T_world_camera.linear() = opticalToBody();
+  Detection d;
+  d.label = "picture";
+  d.score = 0.8;
+  for (int v = 20; v < 40; ++v)
+    for (int u = 30; u < 50; ++u) d.mask.push_back(uint32_t(v * 80 + u));
+  Detection small = d;
+  small.mask.resize(3);
+  ObjectLayer layer = makeLayer();
+  IntegrateStats st = layer.integrate({d, small}, f, 1, 2, 0.5);
+  EXPECT_EQ(st.created, 1);
+  EXPECT_EQ(st.rejected, 1);
+  ASSERT_EQ(layer.size(), 1u);
+  const Object& o = layer.objects()[0];
+  EXPECT_NEAR(o.centroid.x(), 2.0, 1e-3);  // on the wall
+  EXPECT_NEAR(o.centroid.y(), 0.0, 0.05);  // centred in the image
+  EXPECT_NEAR(o.centroid.z(), 0.0, 0.05);
+  // The mask spans 20 px at fx = 40 / tan(43.5 deg): about 0.84 m at 2 m.
+  EXPECT_NEAR(o.box.size().y(), 20 * 2.0 / f.K.fx, 0.06);
+  st = layer.integrate({d}, f, 1, 2, 1.0);
+  EXPECT_EQ(st.merged_semantic, 1);
+  EXPECT_EQ(layer.objects()[0].n_observations, 2);
+  EXPECT_EQ(layer.confirmedCount(), 1u);
+}
