@@ -25,7 +25,7 @@ IntegrateStats& IntegrateStats::operator+=(const IntegrateStats& o) {
   return *this;
 }
 
-// Per-object bookkeeping the public Object does not show.
+// Per-object bookkeeping the public MappedObject does not show.
 struct ObjectLayer::State {
   VoxelCloud cloud;  // voxel means + neighbour index within tau: Omega(new, this)
   Embedding embedding_sum;
@@ -48,7 +48,7 @@ struct ObjectLayer::CentroidIndex {
   double max_extent = 0.0;
   bool dirty = true;
 
-  void rebuild(const std::vector<Object>& objects) {
+  void rebuild(const std::vector<MappedObject>& objects) {
     centroids.clear();
     max_extent = 0.0;
     for (const auto& o : objects) {
@@ -70,14 +70,14 @@ ObjectLayer::~ObjectLayer() = default;
 ObjectLayer::ObjectLayer(ObjectLayer&&) noexcept = default;
 ObjectLayer& ObjectLayer::operator=(ObjectLayer&&) noexcept = default;
 
-const Object* ObjectLayer::find(int id) const {
+const MappedObject* ObjectLayer::find(int id) const {
   // Ids are handed out in order and never removed, so the id is the position plus one.
   if (id < 1 || size_t(id) > objects_.size()) return nullptr;
   return &objects_[size_t(id - 1)];
 }
 
 size_t ObjectLayer::confirmedCount() const {
-  return size_t(std::count_if(objects_.begin(), objects_.end(), [](const Object& o) { return o.confirmed; }));
+  return size_t(std::count_if(objects_.begin(), objects_.end(), [](const MappedObject& o) { return o.confirmed; }));
 }
 
 void ObjectLayer::setRegionOf(const std::function<int(int)>& region_of) {
@@ -168,7 +168,7 @@ Association ObjectLayer::integrateCloud(const std::vector<Vec3f>& world_points, 
 
 void ObjectLayer::create(const std::vector<Vec3f>& cloud, const std::string& label, double score,
                          const Embedding& v, int node, int region, double time) {
-  Object o;
+  MappedObject o;
   o.id = next_id_++;
   o.node_id = node;
   o.region_id = region;
@@ -181,7 +181,7 @@ void ObjectLayer::create(const std::vector<Vec3f>& cloud, const std::string& lab
 
 void ObjectLayer::merge(size_t index, const std::vector<Vec3f>& cloud, const std::string& label, double score,
                         const Embedding& v, double time) {
-  Object& o = objects_[index];
+  MappedObject& o = objects_[index];
   State& s = state_[index];
   s.cloud.insert(cloud);
   // Bounded memory per object: coarsen the voxel grid until the cloud fits.

@@ -58,7 +58,7 @@ TEST(ObjectLayer, SameObjectSeenTwiceMergesSemantically) {
   EXPECT_GT(second.overlap_new_old, 0.9);
   EXPECT_NEAR(second.cosine, 1.0, 1e-6);
   ASSERT_EQ(layer.size(), 1u);
-  const Object& o = layer.objects()[0];
+  const MappedObject& o = layer.objects()[0];
   EXPECT_EQ(o.n_observations, 2);
   EXPECT_TRUE(o.confirmed);
   EXPECT_EQ(o.label, "chair");
@@ -105,7 +105,7 @@ TEST(ObjectLayer, MislabelledReobservationMergesGeometrically) {
   EXPECT_GT(a.overlap_new_old, 0.5);
   EXPECT_GT(a.overlap_old_new, 0.5);
   ASSERT_EQ(layer.size(), 1u);
-  const Object& o = layer.objects()[0];
+  const MappedObject& o = layer.objects()[0];
   EXPECT_EQ(o.label, "chair");  // tie: the first label stays
   EXPECT_EQ(o.votes.size(), 2u);
   layer.integrateCloud(chairAt(2, 3, 8), "bed", 0.9, 0, 0, 2.0);
@@ -177,7 +177,7 @@ TEST(ObjectLayer, LargeCloudsAreCoarsened) {
   cfg.max_points_per_object = 300;
   ObjectLayer layer = makeLayer(cfg);
   layer.integrateCloud(boxSurface(Vec3(0, 0, 0), Vec3(2, 1, 1)), "sofa", 0.9, 0, 0, 0.0);
-  const Object& o = layer.objects()[0];
+  const MappedObject& o = layer.objects()[0];
   EXPECT_LE(o.cloud.size(), 300u);
   EXPECT_GT(o.voxel_size, cfg.voxel_size);
   EXPECT_NEAR(o.box.size().x(), 2.0, 2 * o.voxel_size);
@@ -204,7 +204,7 @@ TEST(ObjectLayer, IntegrateBackProjectsDetections) {
   EXPECT_EQ(st.created, 1);
   EXPECT_EQ(st.rejected, 1);
   ASSERT_EQ(layer.size(), 1u);
-  const Object& o = layer.objects()[0];
+  const MappedObject& o = layer.objects()[0];
   EXPECT_NEAR(o.centroid.x(), 2.0, 1e-3);  // on the wall
   EXPECT_NEAR(o.centroid.y(), 0.0, 0.05);  // centred in the image
   EXPECT_NEAR(o.centroid.z(), 0.0, 0.05);

@@ -1,5 +1,5 @@
 #pragma once
-// Object point clouds (paper Sec. IV-C step 2 and Eq. 1): back-projection of a mask's depth
+// MappedObject point clouds (paper Sec. IV-C step 2 and Eq. 1): back-projection of a mask's depth
 // pixels to the world frame, voxel downsampling, and the geometric similarity Omega(Ci, Cj) =
 // the fraction of Ci's points with a point of Cj within tau. Omega uses a hash grid of cell tau
 // over Cj, so one query probes 27 cells: O(|Ci|) after an O(|Cj|) build.

@@ -24,7 +24,7 @@
 
 namespace ussnav {
 
-struct Object {
+struct MappedObject {
   int id = 0;                                          // stable, from 1
   std::string label;                                   // label with the most votes
   std::vector<std::pair<std::string, double>> votes;   // label -> summed score, first-seen order
@@ -75,9 +75,9 @@ class ObjectLayer {
   Association integrateCloud(const std::vector<Vec3f>& world_points, const std::string& label,
                              double score, int anchor_node, int anchor_region, double time);
 
-  const std::vector<Object>& objects() const { return objects_; }
+  const std::vector<MappedObject>& objects() const { return objects_; }
   // nullptr when no object has this id.
-  const Object* find(int id) const;
+  const MappedObject* find(int id) const;
   size_t size() const { return objects_.size(); }
   size_t confirmedCount() const;
   // Re-anchors every object's region from its node (the region layer renumbered its regions).
@@ -95,7 +95,7 @@ class ObjectLayer {
 
   ObjectsConfig cfg_;
   std::shared_ptr<const TextEncoder> encoder_;
-  std::vector<Object> objects_;
+  std::vector<MappedObject> objects_;
   std::vector<State> state_;  // parallel to objects_
   std::unique_ptr<CentroidIndex> index_;
   int next_id_ = 1;

@@ -1,0 +1,72 @@
+#pragma once
+// The per-frame scene-graph pipeline (DESIGN.md data flow): rolling grid -> coverage mask ->
+// connectivity graph -> objects. It owns the modules and the order of calls; nothing else
+// does. Every stage's wall time goes into times() under its name (grid, coverage, skeleton,
+// perception, objects). The grid's change log of the last frame stays readable until the next
+// process() call, so evaluation hooks can read what the frame changed.
+
+#include <memory>
+
+#include "ussnav/core/config.hpp"
+#include "ussnav/core/frame.hpp"
+#include "ussnav/core/timing.hpp"
+#include "ussnav/mapping/coverage_mask.hpp"
+#include "ussnav/mapping/rolling_grid.hpp"
+#include "ussnav/objects/object_layer.hpp"
+#include "ussnav/perception/detector.hpp"
+#include "ussnav/skeleton/connectivity_graph.hpp"
+
+namespace ussnav {
+
+struct MapperOptions {
+  bool skeleton = true;  // grow the connectivity graph
+  bool objects = true;   // run the detector and the object layer on depth frames
+};
+
+// One frame: the pose and whichever sensors fired. With a scan the scan feeds the grid (the
+// paper's LiDAR set-up); without one the depth frame does (camera-only drones).
+struct MapperFrame {
+  Pose pose;
+  const PointCloudScan* scan = nullptr;
+  const DepthFrame* depth = nullptr;
+  double time = 0.0;
+};
+
+struct MapperFrameReport {
+  InsertStats insert;
+  GraphUpdateStats graph;
+  IntegrateStats objects;
+  double total_ms = 0.0;
+};
+
+class Mapper {
+ public:
+  // `detector` may be null (no object layer); the text encoder is made from the config.
+  Mapper(const Config& cfg, MapperOptions opt, std::unique_ptr<Detector> detector = nullptr);
+  ~Mapper();
+
+  MapperFrameReport process(const MapperFrame& frame);
+
+  const RollingGrid& grid() const { return grid_; }
+  const CoverageMask& coverage() const { return coverage_; }
+  const ConnectivityGraph& graph() const { return graph_; }
+  const ObjectLayer* objects() const { return objects_.get(); }
+  const StageTimes& times() const { return times_; }
+  int64_t frames() const { return frames_; }
+  // Graph node the UAV is in (or nearest to), -1 before the first node exists.
+  int anchorNode(const Vec3& p) const;
+
+ private:
+  Config cfg_;
+  MapperOptions opt_;
+  RollingGrid grid_;
+  CoverageMask coverage_;
+  ConnectivityGraph graph_;
+  std::unique_ptr<Detector> detector_;
+  std::shared_ptr<const TextEncoder> encoder_;
+  std::unique_ptr<ObjectLayer> objects_;
+  StageTimes times_;
+  int64_t frames_ = 0;
+};
+
+}  // namespace ussnav

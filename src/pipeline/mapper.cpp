@@ -1,0 +1,63 @@
+#include "ussnav/pipeline/mapper.hpp"
+
+namespace ussnav {
+
+Mapper::Mapper(const Config& cfg, MapperOptions opt, std::unique_ptr<Detector> detector)
+    : cfg_(cfg),
+      opt_(opt),
+      grid_(cfg.mapping.grid),
+      coverage_(cfg.mapping.coverage, cfg.mapping.grid.resolution),
+      graph_(cfg.skeleton),
+      detector_(std::move(detector)) {
+  if (opt_.objects && detector_) {
+    encoder_ = std::shared_ptr<const TextEncoder>(makeTextEncoder(cfg.perception));
+    objects_ = std::make_unique<ObjectLayer>(cfg.objects, encoder_);
+  }
+}
+
+Mapper::~Mapper() = default;
+
+int Mapper::anchorNode(const Vec3& p) const {
+  const int inside = graph_.containingNode(p);
+  return inside >= 0 ? inside : graph_.nearestNode(p);
+}
+
+MapperFrameReport Mapper::process(const MapperFrame& f) {
+  MapperFrameReport rep;
+  const Stopwatch total;
+  grid_.clearChanges();
+  {
+    const Stopwatch sw;
+    grid_.moveTo(f.pose.position);
+    if (f.scan)
+      rep.insert = grid_.insertScan(*f.scan);
+    else if (f.depth)
+      rep.insert = grid_.insertDepth(*f.depth);
+    times_.add("grid", sw.ms());
+  }
+  {
+    const Stopwatch sw;
+    coverage_.update(grid_);
+    times_.add("coverage", sw.ms());
+  }
+  if (opt_.skeleton) {
+    const Stopwatch sw;
+    rep.graph = graph_.update(grid_, f.pose.position, f.time);
+    times_.add("skeleton", sw.ms());
+  }
+  if (objects_ && f.depth) {
+    Stopwatch sw;
+    const std::vector<Detection> dets = detector_->detect(*f.depth);
+    times_.add("perception", sw.ms());
+    const Stopwatch sw2;
+    const int node = anchorNode(f.pose.position);
+    rep.objects = objects_->integrate(dets, *f.depth, node, -1, f.time);
+    times_.add("objects", sw2.ms());
+  }
+  rep.total_ms = total.ms();
+  times_.add("update", rep.total_ms);
+  ++frames_;
+  return rep;
+}
+
+}  // namespace ussnav
