@@ -42,8 +42,8 @@ void subtract(int lo, int hi, int nlo, int nhi, Interval out[2], int& count) {
 }  // namespace
 
 RollingGrid::RollingGrid(const GridConfig& cfg, const Vec3& center) : cfg_(cfg), res_(cfg.resolution) {
-  if (!std::isfinite(res_) || res_ <= 0)
-    throw InputError(kCfg, "resolution", "must be a positive number of metres, got " + std::to_string(res_));
+  if (!std::isfinite(res_) || res_ < 1e-3)  // keys of +-1e6 m must fit an int
+    throw InputError(kCfg, "resolution", "must be at least 0.001 m, got " + std::to_string(res_));
   const double sizes[3] = {cfg.size_x, cfg.size_y, cfg.size_z};
   const char* names[3] = {"size_x", "size_y", "size_z"};
   double total = 1;
@@ -382,14 +382,14 @@ InsertStats RollingGrid::insertScan(const PointCloudScan& scan) {
   const Vec3f s = ((scan.origin - wmin) / res_).cast<float>();
   if (!originInWindow(s, st)) return st;
   beginFrame();
-  const Vec3f wminf = wmin.cast<float>();
-  const float inv_res = float(1.0 / res_);
+  const double inv_res = 1.0 / res_;
   for (const Vec3f& p : scan.points) {
     if (!p.allFinite()) {
       ++st.invalid;
       continue;
     }
-    addEndpoint(s, (p - wminf) * inv_res, true, st);
+    // Window-relative in double: far from the world origin a float difference loses voxels.
+    addEndpoint(s, ((p.cast<double>() - wmin) * inv_res).cast<float>(), true, st);
   }
   const float reach = float(scan.max_range / res_);
   for (const Vec3f& d : scan.no_return_dirs) {

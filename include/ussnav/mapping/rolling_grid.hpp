@@ -5,6 +5,9 @@
 // Insertion casts one ray per distinct end voxel per frame (hit first, then misses; each voxel
 // updated at most once per frame); rays are clipped to the window. Memory: 4 bytes per voxel
 // (int16 log-odds, state byte, frame-stamp byte) plus per-frame scratch, see memoryBytes().
+// Per frame a driver calls: moveTo(uav position); insertScan(scan) or insertDepth(frame);
+// CoverageMask::update(grid) and any other change-log reader; clearChanges().
+// Const queries may run concurrently with each other, never with an insertion or a roll.
 
 #include <cstddef>
 #include <cstdint>
@@ -51,8 +54,8 @@ struct GridCounters {
 class RollingGrid final : public OccupancyMap {
  public:
   // Window of round(size / resolution) voxels per axis around `center`. Throws InputError
-  // (file "mapping.grid") on a zero/negative/non-finite size or resolution, a window under
-  // 2 voxels or over 2^28 voxels per axis product, or inconsistent log-odds parameters.
+  // (file "mapping.grid") on a zero/negative/non-finite size, a resolution under 1 mm, a
+  // window under 2 voxels on an axis or over 2^28 in all, or inconsistent log-odds.
   explicit RollingGrid(const GridConfig& cfg, const Vec3& center = Vec3::Zero());
 
   // OccupancyMap
@@ -89,9 +92,10 @@ class RollingGrid final : public OccupancyMap {
   bool isOccupied(const Vec3& p) const { return stateAt(p) == VoxelState::Occupied; }
   bool isFree(const Vec3& p) const { return stateAt(p) == VoxelState::Free; }
 
-  // Centres the window on `center` (voxel key of center minus dims/2). Voxels that leave are
-  // reset to Unknown and logged in changes(). Throws InputError on a non-finite centre or one
-  // beyond +-1e6 m (keys would overflow).
+  // Centres the window on `center` (voxel key of center minus dims/2), in z as well: a driver
+  // that wants a vertically anchored window passes a fixed z. Voxels that leave are reset to
+  // Unknown and logged in changes(). Throws InputError on a non-finite centre or one beyond
+  // +-1e6 m (keys would overflow). Cost: O(voxels that leave); a no-op within the same voxel.
   void moveTo(const Vec3& center);
 
   // Inserts a depth image (z-depth along the optical axis, camera optical frame; see
