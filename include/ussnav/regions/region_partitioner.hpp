@@ -1,10 +1,9 @@
 #pragma once
-// Incremental region partitioning of the Spatial Connectivity Graph (paper Sec. IV-B).
-// Each update re-partitions with Leiden (CPM) only the new nodes plus the regions they touch
-// and all regions adjacent to those, then consolidates (dense borders merge, tiny regions are
-// absorbed) and matches the new communities to the old regions by node overlap (optimal
-// assignment), so far-away regions and well-matched ones keep their ids; ids are never reused.
-// Cost per update: O(N + E log E) bookkeeping plus Leiden on the local subgraph only.
+// Incremental region partitioning of the Spatial Connectivity Graph (paper Sec. IV-B): each
+// update runs Leiden (CPM) only on the new nodes, the regions they touch and those regions'
+// neighbours, consolidates, and matches communities to old regions by node overlap (optimal
+// assignment) so ids stay stable and are never reused. Cost: O(N + E) bookkeeping plus Leiden
+// on the local subgraph. igraph's RNG is process-global: one update at a time per process.
 
 #include <map>
 #include <unordered_map>
