@@ -207,18 +207,43 @@ struct ObjectsConfig {
   }
 };
 
+struct RegionsConfig {
+  double resolution = 0.02;          // Leiden CPM resolution (paper: 0.02)
+  double beta = 0.01;                // Leiden refinement randomness
+  int iterations = -1;               // Leiden iterations; -1 = until the partition is stable
+  int merge_shared_border_nodes = 4; // merge two adjacent regions sharing MORE border nodes
+  double border_edge_min_weight = 0.5;  // lighter (forced) edges never make a border node
+  int min_region_nodes = 3;          // smaller regions join their most connected neighbour
+  int seed = 1;                      // igraph RNG seed, reset before every Leiden call
+  bool incremental = true;           // false: Leiden on the whole graph every update
+  bool warm_start = true;            // start Leiden from the previous membership
+  template <class V> void visit(V& v) {
+    v.field("resolution", resolution, 1e-6, 10.0, "CPM resolution");
+    v.field("beta", beta, 1e-6, 10.0, "refinement randomness");
+    v.field("iterations", iterations, -1, 1000, "-1 = until stable, 0 is rejected");
+    v.field("merge_shared_border_nodes", merge_shared_border_nodes, 0, 100000, "nodes");
+    v.field("border_edge_min_weight", border_edge_min_weight, 0.0, 1e9, "edge weight");
+    v.field("min_region_nodes", min_region_nodes, 1, 100000, "nodes");
+    v.field("seed", seed, 0, 2147483647, "");
+    v.field("incremental", incremental);
+    v.field("warm_start", warm_start);
+  }
+};
+
 struct Config {
   SimConfig sim;
   MappingConfig mapping;
   SkeletonConfig skeleton;
   PerceptionConfig perception;
   ObjectsConfig objects;
+  RegionsConfig regions;
   template <class V> void visit(V& v) {
     v.section("sim", sim);
     v.section("mapping", mapping);
     v.section("skeleton", skeleton);
     v.section("perception", perception);
     v.section("objects", objects);
+    v.section("regions", regions);
   }
 };
 
