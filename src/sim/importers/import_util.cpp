@@ -1,0 +1,210 @@
+#include "import_util.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "ussnav/core/error.hpp"
+#include "ussnav/core/io.hpp"
+
+namespace ussnav::importers {
+
+using nlohmann::json;
+
+namespace {
+
+std::vector<std::string> splitTabs(const std::string& line) {
+  std::vector<std::string> out;
+  size_t start = 0;
+  while (true) {
+    const size_t tab = line.find('\t', start);
+    out.push_back(line.substr(start, tab == std::string::npos ? std::string::npos : tab - start));
+    if (tab == std::string::npos) break;
+    start = tab + 1;
+  }
+  return out;
+}
+
+double segmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 ab = b - a;
+  const double len2 = ab.squaredNorm();
+  const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  return (p - (a + t * ab)).norm();
+}
+
+}  // namespace
+
+int TsvTable::column(const std::string& name) const {
+  for (size_t i = 0; i < header.size(); ++i)
+    if (header[i] == name) return int(i);
+  throw InputError(file, "header", "missing column '" + name + "'");
+}
+
+const std::string& TsvTable::cell(size_t row, int col) const { return rows.at(row).at(size_t(col)); }
+
+double TsvTable::number(size_t row, int col) const {
+  const std::string& s = cell(row, col);
+  double v = 0;
+  const char* end = s.data() + s.size();
+  const auto res = std::from_chars(s.data(), end, v);
+  if (s.empty() || res.ec != std::errc() || res.ptr != end || !std::isfinite(v))
+    throw InputError(file, "line " + std::to_string(lines.at(row)) + ": column '" + header.at(size_t(col)) + "'",
+                     "expected a finite number, got '" + s + "'");
+  return v;
+}
+
+TsvTable readTsv(const std::filesystem::path& path, const std::vector<std::string>& required) {
+  TsvTable t;
+  t.file = path.string();
+  std::istringstream in(readFile(path));
+  std::string line;
+  int lineno = 0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) continue;
+    auto cells = splitTabs(line);
+    if (t.header.empty()) {
+      t.header = std::move(cells);
+      continue;
+    }
+    if (cells.size() > t.header.size())
+      throw InputError(t.file, "line " + std::to_string(lineno),
+                       "expected " + std::to_string(t.header.size()) + " tab-separated columns, got " +
+                           std::to_string(cells.size()));
+    cells.resize(t.header.size());
+    t.rows.push_back(std::move(cells));
+    t.lines.push_back(lineno);
+  }
+  if (t.header.empty()) throw InputError(t.file, "", "empty file; expected a header row and data rows");
+  for (const auto& r : required) t.column(r);
+  return t;
+}
+
+void JsonFields::fail(const std::string& path, const std::string& what) const {
+  throw InputError(file_, path, what);
+}
+
+const json& JsonFields::member(const json& obj, const std::string& path, const char* key) const {
+  if (!obj.is_object()) fail(path, "expected an object");
+  auto it = obj.find(key);
+  if (it == obj.end()) fail(path.empty() ? key : path + "." + key, "missing required field");
+  return *it;
+}
+
+const json& JsonFields::array(const json& obj, const std::string& path, const char* key) const {
+  const json& j = member(obj, path, key);
+  if (!j.is_array()) fail(path.empty() ? key : path + "." + key, "expected an array");
+  return j;
+}
+
+double JsonFields::number(const json& obj, const std::string& path, const char* key) const {
+  const json& j = member(obj, path, key);
+  if (!j.is_number() || !std::isfinite(j.get<double>()))
+    fail(path.empty() ? key : path + "." + key, "expected a finite number");
+  return j.get<double>();
+}
+
+std::string JsonFields::string(const json& obj, const std::string& path, const char* key) const {
+  const json& j = member(obj, path, key);
+  if (!j.is_string()) fail(path.empty() ? key : path + "." + key, "expected a string");
+  return j.get<std::string>();
+}
+
+std::string categoryFromTypeName(const std::string& type, const std::map<std::string, std::string>& overrides) {
+  if (auto it = overrides.find(type); it != overrides.end()) return it->second;
+  std::string out;
+  for (size_t i = 0; i < type.size(); ++i) {
+    const char c = type[i];
+    if (c == '_' || c == '-' || c == ' ') {
+      if (!out.empty() && out.back() != ' ') out += ' ';
+      continue;
+    }
+    const bool upper = std::isupper(static_cast<unsigned char>(c));
+    if (upper && i > 0 && !out.empty() && out.back() != ' ') {
+      const char prev = type[i - 1];
+      const bool next_lower = i + 1 < type.size() && std::islower(static_cast<unsigned char>(type[i + 1]));
+      // New word at lower->Upper ("DiningTable") and at the last capital of an acronym ("TVStand").
+      if (std::islower(static_cast<unsigned char>(prev)) || std::isdigit(static_cast<unsigned char>(prev)) ||
+          (std::isupper(static_cast<unsigned char>(prev)) && next_lower))
+        out += ' ';
+    }
+    out += char(std::tolower(static_cast<unsigned char>(c)));
+  }
+  while (!out.empty() && out.back() == ' ') out.pop_back();
+  return out;
+}
+
+void makeCounterClockwise(std::vector<Vec2>& poly) {
+  if (polygonArea(poly) < 0) std::reverse(poly.begin(), poly.end());
+}
+
+void assignRoomsAndDropOutside(World& w, ImportReport* report) {
+  std::vector<Object> kept;
+  kept.reserve(w.objects.size());
+  for (auto& o : w.objects) {
+    const Room* r = w.roomAt(Vec2(o.box.center.x(), o.box.center.y()));
+    if (!r) {
+      if (report) {
+        ++report->dropped_objects;
+        std::ostringstream s;
+        s.precision(3);
+        s << "dropped object '" << o.category << "' at (" << o.box.center.x() << ", " << o.box.center.y()
+          << "): centre outside every room";
+        report->warnings.push_back(s.str());
+      }
+      continue;
+    }
+    o.room_id = r->id;
+    kept.push_back(std::move(o));
+  }
+  for (size_t i = 0; i < kept.size(); ++i) kept[i].id = int(i) + 1;
+  w.objects = std::move(kept);
+}
+
+double clearanceAt(const World& w, const Vec3& p) {
+  const Vec2 p2(p.x(), p.y());
+  double d = std::numeric_limits<double>::infinity();
+  for (const auto& wl : w.walls)
+    if (p.z() >= wl.z0 && p.z() <= wl.z1) d = std::min(d, segmentDistance(p2, wl.a, wl.b) - 0.5 * wl.thickness);
+  for (const auto& o : w.objects) d = std::min(d, o.box.distance(p));
+  if (const Room* r = w.roomAt(p2))
+    for (size_t i = 0; i < r->polygon.size(); ++i)
+      d = std::min(d, segmentDistance(p2, r->polygon[i], r->polygon[(i + 1) % r->polygon.size()]));
+  return d;
+}
+
+Pose freeStartInLargestRoom(const World& w, double height, const std::string& source) {
+  const Room* best = nullptr;
+  for (const auto& r : w.rooms)
+    if (!best || std::abs(polygonArea(r.polygon)) > std::abs(polygonArea(best->polygon))) best = &r;
+  if (!best) throw InputError(source, "rooms", "no room to place the start pose in");
+  Vec2 lo = best->polygon.front(), hi = lo;
+  for (const auto& p : best->polygon) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const double step = 0.1, z = best->floor_z + height;
+  Pose pose;
+  double best_clear = -1;
+  for (double y = lo.y() + 0.5 * step; y < hi.y(); y += step)
+    for (double x = lo.x() + 0.5 * step; x < hi.x(); x += step) {
+      if (!pointInPolygon(Vec2(x, y), best->polygon)) continue;
+      const double c = clearanceAt(w, Vec3(x, y, z));
+      if (c > best_clear + 1e-9) {
+        best_clear = c;
+        pose.position = Vec3(x, y, z);
+      }
+    }
+  if (best_clear < 0) {  // a room thinner than the grid step: its centroid will do
+    const Vec2 c = polygonCentroid(best->polygon);
+    pose.position = Vec3(c.x(), c.y(), z);
+  }
+  pose.yaw = 0.0;
+  return pose;
+}
+
+}  // namespace ussnav::importers
