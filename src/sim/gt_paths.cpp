@@ -39,12 +39,14 @@ GtPlanner::GtPlanner(const GroundTruthGrid& gt, const World& world, double heigh
           occ[idx(x, y)] = 1;
           break;
         }
-  const int r = int(std::ceil(radius / res_));
-  std::vector<Vec2> disc_offsets;
+  const int r = int(std::ceil(radius / res_)) + 1;
   std::vector<std::pair<int, int>> disc;
   for (int dy = -r; dy <= r; ++dy)
     for (int dx = -r; dx <= r; ++dx)
-      if (std::hypot(dx, dy) * res_ <= radius + 0.5 * res_) disc.emplace_back(dx, dy);
+      // Conservative: the closest two points of the two cells, since the UAV may be anywhere
+      // in a free cell and the obstacle anywhere in its voxel.
+      if (std::hypot(std::max(0, std::abs(dx) - 1), std::max(0, std::abs(dy) - 1)) * res_ <= radius)
+        disc.emplace_back(dx, dy);
   free_.assign(size_t(nx_) * ny_, 1);
   for (int y = 0; y < ny_; ++y)
     for (int x = 0; x < nx_; ++x) {

@@ -48,6 +48,7 @@ bool Uav::step(const GroundTruthGrid& gt, double dt) {
   const double moved = move;
   Vec3 pos = pose_.position;
   size_t next = next_;
+  std::vector<Vec3> visited{pos};  // the polyline actually swept this step (corners included)
   while (move > 1e-12 && next < path_.size()) {
     const Vec3 d = path_[next] - pos;
     const double len = d.norm();
@@ -58,19 +59,21 @@ bool Uav::step(const GroundTruthGrid& gt, double dt) {
       pos += d / len * move;
       move = 0;
     }
+    visited.push_back(pos);
   }
-  // Check the swept segment at sub-voxel spacing so a fast step cannot tunnel through a wall.
-  const Vec3 from = pose_.position;
-  const double seg = (pos - from).norm();
-  const int checks = std::max(1, int(std::ceil(seg / (0.5 * gt.resolution()))));
-  for (int i = 1; i <= checks; ++i) {
-    const Vec3 p = from + (pos - from) * (double(i) / checks);
-    if (gt.sphereCollides(p, cfg_.radius)) {
-      ++collisions_;
-      speed_ = 0.0;
-      path_.clear();
-      next_ = 0;
-      return false;
+  // Check the swept polyline at sub-voxel spacing so a fast step cannot tunnel through a wall.
+  for (size_t k = 1; k < visited.size(); ++k) {
+    const Vec3 from = visited[k - 1], to = visited[k];
+    const int checks = std::max(1, int(std::ceil((to - from).norm() / (0.5 * gt.resolution()))));
+    for (int i = 1; i <= checks; ++i) {
+      const Vec3 p = from + (to - from) * (double(i) / checks);
+      if (gt.sphereCollides(p, cfg_.radius)) {
+        ++collisions_;
+        speed_ = 0.0;
+        path_.clear();
+        next_ = 0;
+        return false;
+      }
     }
   }
   travelled_ += moved;
