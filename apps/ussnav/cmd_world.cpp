@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "command.hpp"
+#include "ussnav/core/error.hpp"
 #include "ussnav/core/timing.hpp"
 #include "ussnav/sim/floorplan_generator.hpp"
 #include "ussnav/sim/object_table.hpp"
@@ -18,7 +19,7 @@ namespace {
 
 struct GenerateArgs {
   std::string style = "office";
-  uint64_t seed = 1;
+  int64_t seed = 1;
   int rooms = 0;
   double area = 0.0;
   std::string out;
@@ -37,10 +38,11 @@ struct StatsArgs {
 };
 
 void runGenerate(const GenerateArgs& a) {
+  if (a.seed < 0) throw InputError("world generate", "--seed", "expected a non-negative integer");
   const Config& cfg = globals().config();
   GeneratorParams p;
   p.style = a.style;
-  p.seed = a.seed;
+  p.seed = uint64_t(a.seed);
   p.target_rooms = a.rooms;
   p.target_area_m2 = a.area;
   p.flight_height = cfg.sim.uav.flight_height;

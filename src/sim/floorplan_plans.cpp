@@ -179,7 +179,7 @@ Plan planApartment(int rooms, double min_area_m2, Rng& rng) {
   int total = 0;
   for (int f = 0; f < flats; ++f) {
     Flat& F = fl[f];
-    F.living_w = rng.uniformInt(50, 70);
+    F.living_w = rng.uniformInt(44, 60);
     F.l_shape = rng.bernoulli(0.4);
     std::vector<Slot> front, others;  // front: kitchen side, next to the living room
     front.push_back(makeSlot("kitchen", rng));

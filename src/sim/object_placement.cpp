@@ -2,7 +2,7 @@
 // its placement mode until one passes every check: inside the room clear of the walls, out of
 // every door's clear zone, apart from other objects, under the floor-cover cap, and leaving
 // the room navigable (a 2-D grid, inflated by the UAV radius, still joins all doors, keeps
-// most of its free area, and reaches every object).
+// most of its free area, and comes within kApproach of every object).
 
 #include <algorithm>
 #include <cmath>
@@ -319,13 +319,14 @@ class RoomFurnisher {
           cover += 4 * o.box.half_extents.x() * o.box.half_extents.y();
       if (cover > kMaxFloorCover * area_) return false;
     }
-    return on_top || navigable(b);
+    return navigable(b, !on_top);
   }
 
   // With `b` added: all doors still joined, most of the room still reachable, and every
-  // object still approachable.
-  bool navigable(const OrientedBox& b) {
-    grid_.block(b, +1);
+  // object still approachable (objects on top of others are not obstacles of their own, but
+  // must be approachable too: a laptop at the back of a desk in a corner is not).
+  bool navigable(const OrientedBox& b, bool obstacle) {
+    if (obstacle) grid_.block(b, +1);
     const auto seen = grid_.reach(seeds_[0]);
     bool ok = int(std::count(seen.begin(), seen.end(), 1)) >= kKeepReachable * base_reach_;
     for (size_t s = 1; ok && s < seeds_.size(); ++s) ok = seen[seeds_[s]];
@@ -335,9 +336,8 @@ class RoomFurnisher {
       return false;
     };
     ok = ok && approachable(b);
-    for (size_t i = 0; ok && i < placed_.size(); ++i)
-      if (findCategory(placed_[i].category)->placement != Placement::OnTop) ok = approachable(placed_[i].box);
-    grid_.block(b, -1);
+    for (size_t i = 0; ok && i < placed_.size(); ++i) ok = approachable(placed_[i].box);
+    if (obstacle) grid_.block(b, -1);
     return ok;
   }
 

@@ -127,7 +127,8 @@ std::vector<PlacementRule> makeRules() {
       // Bathrooms: office washrooms have several toilets, flats a bath or a shower.
       R("office", "bathroom", "toilet", 1.0, 1, 3, 4.0),
       R("apartment", "bathroom", "toilet", 1.0, 1, 1),
-      R("", "bathroom", "sink", 1.0, 1, 2, 6.0),
+      R("office", "bathroom", "sink", 1.0, 1, 2, 6.0),
+      R("apartment", "bathroom", "sink", 1.0, 1, 1),
       R("apartment", "bathroom", "bathtub", 0.6, 1, 1),
       R("apartment", "bathroom", "shower", 0.5, 1, 1),
       R("apartment", "bathroom", "washing machine", 0.35, 1, 1),

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 #include <set>
@@ -274,11 +275,13 @@ void validateWorld(const World& w, const std::string& source) {
       const bool z_overlap = a.floor_z < b.ceiling_z - 0.1 && b.floor_z < a.ceiling_z - 0.1;
       if (!z_overlap) continue;
       const double area = overlapArea(a.polygon, b.polygon);
-      if (area > 0.05)
+      if (area > 0.05) {
+        char shared[32];
+        std::snprintf(shared, sizeof shared, "%.2f", area);
         throw InputError(source, at("rooms", k) + ".polygon",
-                         "overlaps room id " + std::to_string(a.id) + " (about " +
-                             std::to_string(int(std::lround(area * 100))) +
-                             " dm^2 of shared floor); rooms must not overlap, only share walls");
+                         "overlaps " + at("rooms", i) + " (id " + std::to_string(a.id) + ", about " + shared +
+                             " m^2 of shared floor); rooms must not overlap, only share walls");
+      }
     }
   for (size_t i = 0; i < w.doors.size(); ++i) {
     const auto& d = w.doors[i];

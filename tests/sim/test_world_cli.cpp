@@ -6,6 +6,7 @@
 
 #include "support/paths.hpp"
 #include "ussnav/core/io.hpp"
+#include "ussnav/sim/floorplan_generator.hpp"
 #include "ussnav/sim/world_io.hpp"
 #include "ussnav/sim/world_stats.hpp"
 
@@ -92,20 +93,24 @@ TEST(WorldCli, BadInputExitsTwoWithOneLineAndNoOutput) {
   EXPECT_EQ(lines(out), 1) << out;
   EXPECT_NE(out.find("style"), std::string::npos) << out;
   EXPECT_FALSE(fs::exists(gen));
+  EXPECT_EQ(run("world generate --seed -3 --out " + q(gen), &out), 2) << out;
+  EXPECT_NE(out.find("--seed"), std::string::npos) << out;
   EXPECT_EQ(run("world generate --rooms 99 --out " + q(gen), &out), 2) << out;
   EXPECT_NE(out.find("rooms"), std::string::npos) << out;
   EXPECT_FALSE(fs::exists(gen));
 
   // A semantically bad world (object outside every room) is refused by render, too.
-  auto j = nlohmann::json::parse(readFile(dir() / "a.json").empty() ? "{}" : readFile(dir() / "a.json"));
-  if (j.contains("objects")) {
-    j["objects"][0]["center"] = {-100.0, -100.0, 0.5};
-    const auto moved = dir() / "moved.json";
-    std::ofstream(moved) << j.dump();
-    EXPECT_EQ(run("world render " + q(moved) + " --out " + q(png), &out), 2) << out;
-    EXPECT_NE(out.find("objects[0]"), std::string::npos) << out;
-    EXPECT_FALSE(fs::exists(png));
-  }
+  GeneratorParams gp;
+  gp.seed = 9;
+  gp.target_rooms = 8;
+  auto j = worldToJson(generateWorld(gp));
+  j["objects"][0]["center"] = {-100.0, -100.0, 0.5};
+  const auto moved = dir() / "moved.json";
+  std::ofstream(moved) << j.dump();
+  EXPECT_EQ(run("world render " + q(moved) + " --out " + q(png), &out), 2) << out;
+  EXPECT_NE(out.find("objects[0]"), std::string::npos) << out;
+  EXPECT_EQ(lines(out), 1) << out;
+  EXPECT_FALSE(fs::exists(png));
 }
 
 TEST(WorldCli, EverySubcommandHasHelp) {

@@ -183,3 +183,16 @@ TEST(WorldIo, DuplicateIdsAndBadDoorsAreRejected) {
 TEST(WorldIo, MissingFileIsAnInputError) {
   EXPECT_THROW(loadWorld(dir() / "nope.json"), InputError);
 }
+
+TEST(WorldIo, DocumentedExampleLoads) {
+  // The example in docs/world-format.md must stay a valid world.
+  const std::string doc = readFile(std::string(USSNAV_SOURCE_DIR) + "/docs/world-format.md");
+  const size_t a = doc.find("```json\n");
+  ASSERT_NE(a, std::string::npos);
+  const size_t b = doc.find("```", a + 8);
+  const World w = worldFromJson(json::parse(doc.substr(a + 8, b - a - 8)), "docs example");
+  EXPECT_EQ(w.rooms.size(), 2u);
+  EXPECT_EQ(w.rooms[1].ceiling_z, 2.8);
+  EXPECT_EQ(w.walls[0].openings.size(), 1u);
+  EXPECT_EQ(w.objects[0].category, "desk");
+}
