@@ -79,11 +79,21 @@ TEST(FloorplanGenerator, RequiredRoomTypesPerStyle) {
   }
 }
 
-TEST(FloorplanGenerator, RoomsDoNotOverlap) {
+TEST(FloorplanGenerator, RoomsTileTheFloorWithoutOverlap) {
+  int unions = 0;
   for (const auto& w : sampleWorlds()) {
     EXPECT_EQ(test::roomOverlapSamples(w), 0) << w.name;
     EXPECT_NO_THROW(validateWorld(w, w.name));
+    // Both styles build a rectangular floor: no overlap and no gap means the room areas add
+    // up to the footprint's bounding rectangle.
+    Vec2 lo = w.rooms[0].polygon[0], hi = lo;
+    for (const auto& r : w.rooms) {
+      for (const auto& p : r.polygon) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+      unions += r.polygon.size() > 4;  // T- and L-shaped rooms (unions of rectangles)
+    }
+    EXPECT_NEAR(floorArea(w), (hi - lo).prod(), 1e-6) << w.name;
   }
+  EXPECT_GT(unions, 3);
 }
 
 TEST(FloorplanGenerator, DoorGraphConnectsEveryRoom) {

@@ -162,9 +162,17 @@ TEST(WorldIo, OverlappingRoomsAreRejected) {
   } catch (const InputError& err) {
     EXPECT_EQ(err.field(), "rooms[1].polygon");
   }
-  // Sharing a wall is fine.
+  // Sharing a wall is fine, and so is a 5 cm sliver along it (imprecise imported plans).
   w.rooms[1].polygon = {{10, 2}, {20, 2}, {20, 8}, {10, 8}};
   EXPECT_NO_THROW(validateWorld(w, "w.json"));
+  w.rooms[1].polygon = {{9.95, 2}, {20, 2}, {20, 8}, {9.95, 8}};
+  EXPECT_NO_THROW(validateWorld(w, "w.json"));
+  // An L-shaped room with a rectangle in its notch: bounding boxes overlap, floors do not.
+  w.rooms[0].polygon = {{0, 0}, {10, 0}, {10, 4}, {4, 4}, {4, 10}, {0, 10}};
+  w.rooms[1].polygon = {{4, 4}, {10, 4}, {10, 10}, {4, 10}};
+  EXPECT_NO_THROW(validateWorld(w, "w.json"));
+  w.rooms[1].polygon = {{3.5, 3.5}, {10, 3.5}, {10, 10}, {3.5, 10}};
+  EXPECT_THROW(validateWorld(w, "w.json"), InputError);
 }
 
 TEST(WorldIo, ObjectOutsideEveryRoomIsRejected) {
