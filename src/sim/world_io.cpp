@@ -1,6 +1,9 @@
 #include "ussnav/sim/world_io.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -41,6 +44,11 @@ class Reader {
   }
   int integer(const json& j, const std::string& path) const {
     if (!j.is_number_integer()) fail(path, "expected an integer");
+    // get<int>() would silently wrap values outside int (an id of 2^40 is a corrupt file).
+    const bool fits = j.is_number_unsigned() ? j.get<uint64_t>() <= uint64_t(std::numeric_limits<int>::max())
+                                             : j.get<int64_t>() >= std::numeric_limits<int>::min() &&
+                                                   j.get<int64_t>() <= std::numeric_limits<int>::max();
+    if (!fits) fail(path, "expected an integer within 32-bit range");
     return j.get<int>();
   }
   std::string string(const json& j, const std::string& path) const {
@@ -65,6 +73,32 @@ class Reader {
 };
 
 std::string at(const std::string& base, size_t i) { return base + "[" + std::to_string(i) + "]"; }
+
+// Approximate floor two polygons share beyond a tolerance: lattice samples (at most ~40k)
+// over the intersection of their bounding boxes; a sample counts its cell when it and its four
+// neighbours `tol` away lie in both polygons, so slivers thinner than 2 x tol (imprecise
+// shared walls in imported plans) do not count.
+double overlapArea(const std::vector<Vec2>& pa, const std::vector<Vec2>& pb, double tol) {
+  Vec2 alo = pa[0], ahi = pa[0], blo = pb[0], bhi = pb[0];
+  for (const auto& p : pa) alo = alo.cwiseMin(p), ahi = ahi.cwiseMax(p);
+  for (const auto& p : pb) blo = blo.cwiseMin(p), bhi = bhi.cwiseMax(p);
+  const Vec2 lo = alo.cwiseMax(blo), hi = ahi.cwiseMin(bhi);
+  const Vec2 ext = hi - lo;
+  if (ext.x() <= 0.02 || ext.y() <= 0.02) return 0.0;
+  const double step = std::max(0.05, std::sqrt(ext.x() * ext.y() / 40000.0));
+  const int nx = std::max(1, int(ext.x() / step)), ny = std::max(1, int(ext.y() / step));
+  const double dx = ext.x() / nx, dy = ext.y() / ny;
+  int hits = 0;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const Vec2 p(lo.x() + (i + 0.5) * dx, lo.y() + (j + 0.5) * dy);
+      auto both = [&](const Vec2& q) { return pointInPolygon(q, pa) && pointInPolygon(q, pb); };
+      if (both(p) && both(p + Vec2(tol, 0)) && both(p - Vec2(tol, 0)) && both(p + Vec2(0, tol)) &&
+          both(p - Vec2(0, tol)))
+        ++hits;
+    }
+  return hits * dx * dy;
+}
 
 }  // namespace
 
@@ -112,7 +146,9 @@ json worldToJson(const World& w) {
 World worldFromJson(const json& j, const std::string& source) {
   Reader r(source);
   if (!j.is_object()) r.fail("", "expected a JSON object (a ussnav world)");
-  if (j.value("format", "") != "ussnav-world")
+  // Checked as a string first: json::value() throws a type_error (not an InputError) on
+  // "format": 5.
+  if (!j.contains("format") || !j["format"].is_string() || j["format"].get<std::string>() != "ussnav-world")
     r.fail("format", "expected \"ussnav-world\" (is this a world file?)");
   const int version = r.integer(r.member(j, "", "version"), "version");
   if (version != World::kFormatVersion)
@@ -135,6 +171,7 @@ World worldFromJson(const json& j, const std::string& source) {
     Room room;
     room.id = r.integer(r.member(rooms[i], p, "id"), p + ".id");
     room.type = r.string(r.member(rooms[i], p, "type"), p + ".type");
+    if (room.type.empty()) r.fail(p + ".type", "expected a non-empty room type");
     if (rooms[i].contains("name")) room.name = r.string(rooms[i]["name"], p + ".name");
     const auto& poly = r.array(r.member(rooms[i], p, "polygon"), p + ".polygon");
     if (poly.size() < 3) r.fail(p + ".polygon", "expected at least 3 points");
@@ -167,6 +204,7 @@ World worldFromJson(const json& j, const std::string& source) {
           o.bottom = r.number(ops[k], q, "bottom", 0.0);
           o.top = r.number(ops[k], q, "top", 2.1);
           if (o.end <= o.start) r.fail(q + ".end", "expected end > start");
+          if (o.top <= o.bottom) r.fail(q + ".top", "expected top > bottom");
           wl.openings.push_back(o);
         }
       }
@@ -217,7 +255,8 @@ World worldFromJson(const json& j, const std::string& source) {
       if (!c.is_array() || c.size() != 3 || !c[0].is_number_integer() || !c[1].is_number_integer() ||
           !c[2].is_number_integer())
         r.fail(at("obstacles.cells", i), "expected [i, j, k] integers");
-      w.obstacles.cells.emplace_back(c[0].get<int>(), c[1].get<int>(), c[2].get<int>());
+      const std::string q = at("obstacles.cells", i);
+      w.obstacles.cells.emplace_back(r.integer(c[0], q + "[0]"), r.integer(c[1], q + "[1]"), r.integer(c[2], q + "[2]"));
     }
   }
   if (w.rooms.empty() && w.obstacles.cells.empty())
@@ -231,23 +270,24 @@ void validateWorld(const World& w, const std::string& source) {
   for (size_t i = 0; i < w.rooms.size(); ++i)
     if (!room_ids.insert(w.rooms[i].id).second)
       throw InputError(source, at("rooms", i) + ".id", "duplicate room id " + std::to_string(w.rooms[i].id));
-  // Overlap: a room's interior sample points (centroid and shrunk vertices) inside another room.
-  for (size_t i = 0; i < w.rooms.size(); ++i) {
-    const auto& a = w.rooms[i];
-    const Vec2 c = polygonCentroid(a.polygon);
-    std::vector<Vec2> probes{c};
-    for (const auto& p : a.polygon) probes.push_back(p + 0.2 * (c - p));
-    for (size_t k = 0; k < w.rooms.size(); ++k) {
-      if (k == i) continue;
+  // Overlap: rooms may share walls (touching boundaries) but not floor. An overlap at least
+  // 20 cm thick and larger than 0.05 m^2 is an error; thinner slivers along a shared wall are
+  // tolerated (imported plans are rarely exact).
+  for (size_t i = 0; i < w.rooms.size(); ++i)
+    for (size_t k = i + 1; k < w.rooms.size(); ++k) {
+      const auto& a = w.rooms[i];
       const auto& b = w.rooms[k];
       const bool z_overlap = a.floor_z < b.ceiling_z - 0.1 && b.floor_z < a.ceiling_z - 0.1;
       if (!z_overlap) continue;
-      for (const auto& p : probes)
-        if (pointInPolygon(p, a.polygon) && pointInPolygon(p, b.polygon))
-          throw InputError(source, at("rooms", i) + ".polygon",
-                           "overlaps room id " + std::to_string(b.id) + "; rooms must not overlap");
+      const double area = overlapArea(a.polygon, b.polygon, 0.1);
+      if (area > 0.05) {
+        char shared[32];
+        std::snprintf(shared, sizeof shared, "%.2f", area);
+        throw InputError(source, at("rooms", k) + ".polygon",
+                         "overlaps " + at("rooms", i) + " (id " + std::to_string(a.id) + ", about " + shared +
+                             " m^2 of shared floor); rooms must not overlap, only share walls");
+      }
     }
-  }
   for (size_t i = 0; i < w.doors.size(); ++i) {
     const auto& d = w.doors[i];
     if (!door_ids.insert(d.id).second)
