@@ -109,11 +109,13 @@ struct GridConfig {
 struct CoverageConfig {
   double cell_size = 1.0;            // m, square cells in x-y
   double cell_height = 4.0;          // m, vertical extent of one cell (window height)
-  double visited_unknown_fraction = 0.2;  // visited when unknown voxels < this fraction
+  double visited_unknown_fraction = 0.5;  // visited when unknown voxels < this fraction
+  double min_window_fraction = 0.5;  // judge a cell only when this much of it is in the window
   template <class V> void visit(V& v) {
     v.field("cell_size", cell_size, 0.2, 10.0, "m");
     v.field("cell_height", cell_height, 0.2, 50.0, "m");
     v.field("visited_unknown_fraction", visited_unknown_fraction, 0.0, 1.0, "fraction");
+    v.field("min_window_fraction", min_window_fraction, 0.01, 1.0, "fraction");
   }
 };
 

@@ -3,6 +3,7 @@
 // so they work on the RollingGrid and on hand-made test grids alike (an adaptor, as in
 // nanoflann). Voxels are globally aligned: the voxel key of point p is floor(p / resolution).
 
+#include <cmath>
 #include <cstdint>
 
 #include "ussnav/core/types.hpp"
