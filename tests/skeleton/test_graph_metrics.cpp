@@ -2,7 +2,7 @@
 
 #include <set>
 
-#include "support/dense_grid.hpp"
+#include "support/skeleton_scenes.hpp"
 #include "ussnav/skeleton/graph_drawing.hpp"
 #include "ussnav/skeleton/graph_metrics.hpp"
 
@@ -19,7 +19,7 @@ ConnectivityGraph grown(const OccupancyMap& map, const Vec3& uav) {
 }  // namespace
 
 TEST(GraphMetrics, StatsCountNodesAndEdgesByType) {
-  const TwoRoomsScene scene = twoRooms();
+  const TwoRoomsScene scene = twoRoomsGrid();
   const ConnectivityGraph g = grown(scene.grid, Vec3(1.0, 1.0, 1.2));
   const GraphStats s = graphStats(g);
   EXPECT_EQ(s.nodes, int(g.size()));
@@ -43,7 +43,7 @@ TEST(GraphMetrics, StatsCountNodesAndEdgesByType) {
 }
 
 TEST(GraphMetrics, ComponentsSeparateDisconnectedParts) {
-  TwoRoomsScene scene = twoRooms();
+  TwoRoomsScene scene = twoRoomsGrid();
   scene.grid.wall(scene.door);
   ConnectivityGraph g;
   for (int f = 0; f < 30; ++f) g.update(scene.grid, Vec3(1.0, 1.0, 1.2), 0.1 * f);
@@ -55,7 +55,7 @@ TEST(GraphMetrics, ComponentsSeparateDisconnectedParts) {
 }
 
 TEST(GraphMetrics, CoverageMatchesBruteForce) {
-  BoxRoomScene scene = boxRoom(Vec3(3.0, 2.5, 2.4));
+  BoxRoomScene scene = boxRoomGrid(Vec3(3.0, 2.5, 2.4));
   SkeletonConfig cfg;
   cfg.max_expansions_per_frame = 3;  // a partial graph, so that coverage is well below 1
   ConnectivityGraph g(cfg);
@@ -97,7 +97,7 @@ TEST(GraphDrawing, ConvexOutlineOfPoints) {
 }
 
 TEST(GraphDrawing, DrawsPolyhedraCentresAndTypedEdges) {
-  const TwoRoomsScene scene = twoRooms();
+  const TwoRoomsScene scene = twoRoomsGrid();
   const ConnectivityGraph g = grown(scene.grid, Vec3(1.0, 1.0, 1.2));
   const TopDownView view = TopDownView::fit(scene.grid.bounds(), 50);
   Image img(view.width, view.height);

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "support/dense_grid.hpp"
+#include "support/skeleton_scenes.hpp"
 #include "ussnav/core/error.hpp"
 #include "ussnav/skeleton/connectivity_graph.hpp"
 #include "ussnav/skeleton/graph_search.hpp"
@@ -39,7 +39,7 @@ void expectClearPolyline(const OccupancyMap& map, const std::vector<Vec3>& pts) 
 }  // namespace
 
 TEST(GraphSearch, PathBetweenRoomsGoesThroughTheDoor) {
-  const TwoRoomsScene scene = twoRooms();
+  const TwoRoomsScene scene = twoRoomsGrid();
   ConnectivityGraph g;
   grow(g, scene.grid, Vec3(1.0, 1.0, 1.2));
   const Vec3 start(0.8, 0.7, 1.0), goal(7.5, 0.6, 1.5);
@@ -73,7 +73,7 @@ TEST(GraphSearch, PathBetweenRoomsGoesThroughTheDoor) {
 }
 
 TEST(GraphSearch, DirectLineOfSightNeedsNoGraph) {
-  const BoxRoomScene scene = boxRoom();
+  const BoxRoomScene scene = boxRoomGrid();
   const ConnectivityGraph empty;
   const GraphPath path = findGraphPath(empty, scene.grid, Vec3(0.5, 0.5, 1.0), Vec3(3.5, 3.0, 1.8));
   ASSERT_TRUE(path.found);
@@ -82,7 +82,7 @@ TEST(GraphSearch, DirectLineOfSightNeedsNoGraph) {
 }
 
 TEST(GraphSearch, SealedRoomIsUnreachable) {
-  TwoRoomsScene scene = twoRooms();
+  TwoRoomsScene scene = twoRoomsGrid();
   scene.grid.wall(scene.door);  // no door
   ConnectivityGraph g;
   grow(g, scene.grid, Vec3(1.0, 1.0, 1.2));
@@ -95,7 +95,7 @@ TEST(GraphSearch, SealedRoomIsUnreachable) {
 }
 
 TEST(GraphSearch, AvoidsEdgesThatTheCurrentMapBlocks) {
-  CorridorScene scene = corridor(10.0, 1.2, 2.4);
+  CorridorScene scene = corridorGrid(10.0, 1.2, 2.4);
   ConnectivityGraph g;
   grow(g, scene.grid, Vec3(0.6, 0.6, 1.2));
   const Vec3 start(0.6, 0.6, 1.2), goal(9.4, 0.6, 1.2);
@@ -127,7 +127,7 @@ TEST(GraphSearch, ShortcutsAroundAnL) {
 }
 
 TEST(GridPath, FindsShortPathsAroundWallsOnly) {
-  const TwoRoomsScene scene = twoRooms();
+  const TwoRoomsScene scene = twoRoomsGrid();
   const Vec3 a(3.6, 1.2, 1.0), b(4.6, 1.2, 1.0);  // either side of the wall, near the door
   ASSERT_FALSE(lineOfSight(scene.grid, a, b, true));
   const auto path = gridPath(scene.grid, a, b, 3.0);
