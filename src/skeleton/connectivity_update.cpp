@@ -68,7 +68,7 @@ GraphUpdateStats ConnectivityGraph::update(const OccupancyMap& map, const Vec3& 
     ++st.surfaces_popped;
     const SeedDecision d = findNewExpandSeed(s, map, *this, cfg_);
     if (d.status == SeedStatus::Accepted) {
-      if (addNode(map, d.position, s.node, {d.from, d.position}, true, time, st) < 0) ++st.dropped;
+      addNode(map, d.position, s.node, {d.from, d.position}, true, time, st);
     } else if (d.status == SeedStatus::Deferred) {
       deferred_.push_back({std::move(s), d.probe});
       ++st.deferred;
