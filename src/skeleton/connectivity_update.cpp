@@ -191,7 +191,9 @@ void ConnectivityGraph::updateTopology(const OccupancyMap& map, int id, GraphUpd
     if (route.count(other)) continue;
     // Failed searches fill their whole ellipsoid (~1 ms); the nearest few candidates suffice.
     if (loop_attempts++ >= kMaxLoopAttempts) continue;
-    const auto path = gridPath(map, o.center, center, cfg_.loop_path_max, unknown_blocks);
+    // Cells of about the robot radius: far cheaper, and a gap they miss is too narrow to fly.
+    const int cell = std::max(1, int(cfg_.robot_radius / map.resolution() + 1e-9));
+    const auto path = gridPath(map, o.center, center, cfg_.loop_path_max, unknown_blocks, cell);
     if (!path) continue;
     std::vector<Vec3> via(path->begin() + 1, path->end() - 1);
     if (overlap)

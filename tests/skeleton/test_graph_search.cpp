@@ -143,3 +143,22 @@ TEST(GridPath, FindsShortPathsAroundWallsOnly) {
   // A longer budget reaches around from farther away.
   EXPECT_TRUE(gridPath(scene.grid, Vec3(3.0, 0.3, 1.0), Vec3(5.2, 0.3, 1.0), 5.0).has_value());
 }
+
+TEST(GridPath, CoarseCellsSkipSlitsTooNarrowToFly) {
+  // A wall with a 0.2 m slit: passable voxel by voxel, not on 0.2 m cells.
+  DenseGrid grid(box(Vec3(-0.2, -0.2, -0.2), Vec3(4.2, 3.2, 2.6)), 0.1, VoxelState::Occupied);
+  grid.carve(box(Vec3(0, 0, 0), Vec3(4.0, 3.0, 2.4)));
+  grid.wall(box(Vec3(1.9, 0, 0), Vec3(2.1, 3.0, 2.4)));
+  grid.carve(box(Vec3(1.9, 1.3, 0.8), Vec3(2.1, 1.5, 1.6)));  // voxels 13-14: no 2-cell fits
+  const Vec3 a(1.5, 1.4, 1.2), b(2.5, 1.4, 1.2);
+  const auto fine = gridPath(grid, a, b, 2.0, true, 1);
+  ASSERT_TRUE(fine.has_value());
+  EXPECT_TRUE(polylineClear(grid, *fine, true));
+  EXPECT_FALSE(gridPath(grid, a, b, 2.0, true, 2).has_value());
+  // Widen it to 0.6 m: coarse cells pass too, and the result is clear voxel by voxel.
+  grid.carve(box(Vec3(1.9, 1.2, 0.8), Vec3(2.1, 1.8, 1.6)));
+  const auto coarse = gridPath(grid, a, b, 2.0, true, 2);
+  ASSERT_TRUE(coarse.has_value());
+  EXPECT_TRUE(polylineClear(grid, *coarse, true));
+  EXPECT_LE(polylineLength(*coarse), 2.0);
+}
