@@ -68,7 +68,7 @@ GraphUpdateStats ConnectivityGraph::update(const OccupancyMap& map, const Vec3& 
     ++st.surfaces_popped;
     const SeedDecision d = findNewExpandSeed(s, map, *this, cfg_);
     if (d.status == SeedStatus::Accepted) {
-      if (addNode(map, d.position, s.node, {d.from, d.position}, true, time, st) < 0) ++st.dropped;
+      addNode(map, d.position, s.node, {d.from, d.position}, true, time, st);
     } else if (d.status == SeedStatus::Deferred) {
       deferred_.push_back({std::move(s), d.probe});
       ++st.deferred;
@@ -191,7 +191,9 @@ void ConnectivityGraph::updateTopology(const OccupancyMap& map, int id, GraphUpd
     if (route.count(other)) continue;
     // Failed searches fill their whole ellipsoid (~1 ms); the nearest few candidates suffice.
     if (loop_attempts++ >= kMaxLoopAttempts) continue;
-    const auto path = gridPath(map, o.center, center, cfg_.loop_path_max, unknown_blocks);
+    // Cells of about the robot radius: far cheaper, and a gap they miss is too narrow to fly.
+    const int cell = std::max(1, int(cfg_.robot_radius / map.resolution() + 1e-9));
+    const auto path = gridPath(map, o.center, center, cfg_.loop_path_max, unknown_blocks, cell);
     if (!path) continue;
     std::vector<Vec3> via(path->begin() + 1, path->end() - 1);
     if (overlap)

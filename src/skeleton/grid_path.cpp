@@ -38,12 +38,20 @@ std::vector<Vec3> shortcutPolyline(const OccupancyMap& map, const std::vector<Ve
 }
 
 std::optional<std::vector<Vec3>> gridPath(const OccupancyMap& map, const Vec3& a, const Vec3& b,
-                                          double max_length, bool unknown_blocks) {
-  const double res = map.resolution();
-  const Vec3i ka = map.keyOf(a), kb = map.keyOf(b);
+                                          double max_length, bool unknown_blocks, int cell_voxels) {
+  const int c = std::max(1, cell_voxels);
+  const double res = map.resolution() * c;  // the search runs on cells of c^3 voxels
+  auto cellOf = [&](const Vec3& p) {
+    return Vec3i(int(std::floor(p.x() / res)), int(std::floor(p.y() / res)), int(std::floor(p.z() / res)));
+  };
+  auto cellCenter = [&](const Vec3i& k) { return Vec3((k.cast<double>() + Vec3::Constant(0.5)) * res); };
+  const Vec3i ka = cellOf(a), kb = cellOf(b);
   const double direct = (b - a).norm();
   if (direct > max_length) return std::nullopt;
-  if (ka == kb) return std::vector<Vec3>{a, b};
+  if (ka == kb) {
+    if (!lineOfSight(map, a, b, unknown_blocks)) return std::nullopt;
+    return std::vector<Vec3>{a, b};
+  }
   // Every voxel on a path of length <= L lies within (L - |ab|)/2 of the segment's box. One
   // extra layer of voxels forms a border that is never passable, so moves need no bounds check.
   const double slack = 0.5 * (max_length - direct) + res;
@@ -103,14 +111,22 @@ std::optional<std::vector<Vec3>> gridPath(const OccupancyMap& map, const Vec3& a
   // box is never passable.
   auto passable = [&](size_t i) {
     touch(i);
-    signed char& c = sc.pass[i];
-    if (c < 0) {
+    signed char& cp = sc.pass[i];
+    if (cp < 0) {
       const Vec3i k = keyOfIndex(i);
       const bool border = (k.array() == lo.array()).any() || (k.array() == hi.array()).any();
-      const VoxelState st = border ? VoxelState::Occupied : map.state(k);
-      c = (!border && (i == goal || st == VoxelState::Free || (!unknown_blocks && st == VoxelState::Unknown))) ? 1 : 0;
+      bool ok = !border;
+      // A cell is passable when all its voxels are (the end cells always are).
+      if (ok && i != goal && i != origin)
+        for (int z = 0; z < c && ok; ++z)
+          for (int y = 0; y < c && ok; ++y)
+            for (int x = 0; x < c && ok; ++x) {
+              const VoxelState st = map.state(k * c + Vec3i(x, y, z));
+              ok = st == VoxelState::Free || (!unknown_blocks && st == VoxelState::Unknown);
+            }
+      cp = ok ? 1 : 0;
     }
-    return c == 1;
+    return cp == 1;
   };
 
   // The 26 moves; a diagonal move also needs each of its axis-aligned sub-moves passable, so
@@ -147,7 +163,7 @@ std::optional<std::vector<Vec3>> gridPath(const OccupancyMap& map, const Vec3& a
   using Item = std::pair<float, size_t>;  // f, index; ties broken by index: deterministic
   std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
   // Path length is measured between voxel centres plus the two end stubs.
-  const double stub = (a - map.centerOf(ka)).norm() + (b - map.centerOf(kb)).norm();
+  const double stub = (a - cellCenter(ka)).norm() + (b - cellCenter(kb)).norm();
   const float budget = float(max_length - stub) + 1e-5f;
   touch(origin);
   g[origin] = 0.f;
@@ -190,7 +206,7 @@ std::optional<std::vector<Vec3>> gridPath(const OccupancyMap& map, const Vec3& a
   if (!found) return std::nullopt;
   std::vector<Vec3> pts{b};
   for (int i = parent[goal]; i >= 0; i = parent[size_t(i)])
-    pts.push_back(size_t(i) == origin ? a : map.centerOf(keyOfIndex(size_t(i))));
+    pts.push_back(size_t(i) == origin ? a : cellCenter(keyOfIndex(size_t(i))));
   std::reverse(pts.begin(), pts.end());
   std::vector<Vec3> out = shortcutPolyline(map, pts, unknown_blocks);
   if (polylineLength(out) > max_length + 1e-9 || !polylineClear(map, out, unknown_blocks))

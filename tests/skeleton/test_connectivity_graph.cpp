@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "support/dense_grid.hpp"
+#include "support/skeleton_scenes.hpp"
 #include "ussnav/core/error.hpp"
 #include "ussnav/skeleton/connectivity_graph.hpp"
 #include "ussnav/skeleton/graph_metrics.hpp"
@@ -75,7 +75,7 @@ void expectSameGraph(const ConnectivityGraph& a, const ConnectivityGraph& b) {
 }  // namespace
 
 TEST(ConnectivityGraph, EmptyBoxRoomGivesSmallConnectedCoveringGraph) {
-  const BoxRoomScene scene = boxRoom(Vec3(4.0, 4.0, 2.6));
+  const BoxRoomScene scene = boxRoomGrid(Vec3(4.0, 4.0, 2.6));
   ConnectivityGraph g;
   growUntilStable(g, scene.grid, Vec3(2.0, 2.0, 1.2));
   const GraphStats s = graphStats(g);
@@ -91,7 +91,7 @@ TEST(ConnectivityGraph, EmptyBoxRoomGivesSmallConnectedCoveringGraph) {
 }
 
 TEST(ConnectivityGraph, TwoRoomsAreJoinedThroughTheDoorOnly) {
-  const TwoRoomsScene scene = twoRooms();
+  const TwoRoomsScene scene = twoRoomsGrid();
   ConnectivityGraph g;
   growUntilStable(g, scene.grid, Vec3(1.0, 1.0, 1.2));
   int in_a = 0, in_b = 0;
@@ -147,7 +147,7 @@ TEST(ConnectivityGraph, TwoRoomsAreJoinedThroughTheDoorOnly) {
 }
 
 TEST(ConnectivityGraph, CorridorGivesAChain) {
-  const CorridorScene scene = corridor(10.0, 1.2, 2.4);
+  const CorridorScene scene = corridorGrid(10.0, 1.2, 2.4);
   ConnectivityGraph g;
   growUntilStable(g, scene.grid, Vec3(0.6, 0.6, 1.2));
   const int n = int(g.size());
@@ -178,7 +178,7 @@ TEST(ConnectivityGraph, CorridorGivesAChain) {
 }
 
 TEST(ConnectivityGraph, MultiRoomFloorStaysInFreeSpace) {
-  const FloorScene scene = roomFloor(3, 2);
+  const FloorScene scene = floorGrid(3, 2);
   ConnectivityGraph g;
   growUntilStable(g, scene.grid, Vec3(2.0, 2.0, 1.2));
   for (const Aabb& room : scene.rooms) {
@@ -192,7 +192,7 @@ TEST(ConnectivityGraph, MultiRoomFloorStaysInFreeSpace) {
 }
 
 TEST(ConnectivityGraph, EdgeWeightsFollowTheirType) {
-  const FloorScene scene = roomFloor(3, 2);
+  const FloorScene scene = floorGrid(3, 2);
   SkeletonConfig cfg;
   cfg.forced_edge_weight = 0.05;
   ConnectivityGraph g(cfg);
@@ -234,7 +234,7 @@ TEST(ConnectivityGraph, EdgeWeightsFollowTheirType) {
 }
 
 TEST(ConnectivityGraph, SameFramesGiveTheSameGraph) {
-  const FloorScene scene = roomFloor(2, 2);
+  const FloorScene scene = floorGrid(2, 2);
   ConnectivityGraph a, b;
   growUntilStable(a, scene.grid, Vec3(2.0, 2.0, 1.2));
   growUntilStable(b, scene.grid, Vec3(2.0, 2.0, 1.2));
@@ -242,7 +242,7 @@ TEST(ConnectivityGraph, SameFramesGiveTheSameGraph) {
 }
 
 TEST(ConnectivityGraph, BoundedWorkPerFrameConvergesToTheSameGraph) {
-  const TwoRoomsScene scene = twoRooms();
+  const TwoRoomsScene scene = twoRoomsGrid();
   ConnectivityGraph whole;
   growUntilStable(whole, scene.grid, Vec3(1.0, 1.0, 1.2));
   SkeletonConfig cfg;
@@ -260,8 +260,8 @@ TEST(ConnectivityGraph, BoundedWorkPerFrameConvergesToTheSameGraph) {
 
 TEST(ConnectivityGraph, RevealingSpaceAddsNodesAndKeepsOldOnes) {
   // Room B and the door are unobserved at first.
-  const TwoRoomsScene truth = twoRooms();
-  TwoRoomsScene scene = twoRooms();
+  const TwoRoomsScene truth = twoRoomsGrid();
+  TwoRoomsScene scene = twoRoomsGrid();
   scene.grid.hide(box(Vec3(scene.wall_min_x, -1, -1), Vec3(9, 5, 3)));
   ConnectivityGraph g;
   growUntilStable(g, scene.grid, Vec3(1.0, 1.0, 1.2), 0.0);
@@ -298,7 +298,7 @@ TEST(ConnectivityGraph, RevealingSpaceAddsNodesAndKeepsOldOnes) {
 
 TEST(ConnectivityGraph, NodesOutliveTheRollingWindow) {
   // A sensor sweep along a tour of four rooms with an 8 x 8 x 4 m window around the UAV.
-  const FloorScene truth = roomFloor(2, 2);
+  const FloorScene truth = floorGrid(2, 2);
   DenseGrid known(truth.grid.bounds(), 0.1, VoxelState::Unknown);
   const std::vector<Vec3> tour = samplePolyline(
       {Vec3(2, 2, 1.2), Vec3(3.0, 1.6, 1.2), Vec3(5.5, 1.6, 1.2), Vec3(6.2, 2.0, 1.2), Vec3(6.85, 3.6, 1.2),
@@ -328,7 +328,7 @@ TEST(ConnectivityGraph, NodesOutliveTheRollingWindow) {
 }
 
 TEST(ConnectivityGraph, SeedsAtTheUavWhenNothingCoversIt) {
-  const FloorScene scene = roomFloor(2, 1);
+  const FloorScene scene = floorGrid(2, 1);
   SkeletonConfig cfg;
   cfg.max_expansions_per_frame = 1;
   ConnectivityGraph g(cfg);
@@ -349,7 +349,7 @@ TEST(ConnectivityGraph, SeedsAtTheUavWhenNothingCoversIt) {
 }
 
 TEST(ConnectivityGraph, QueriesFindNodesByPlaceAndTime) {
-  const BoxRoomScene scene = boxRoom();
+  const BoxRoomScene scene = boxRoomGrid();
   ConnectivityGraph g;
   growUntilStable(g, scene.grid, Vec3(2.0, 2.0, 1.2));
   ASSERT_GE(g.size(), 3u);

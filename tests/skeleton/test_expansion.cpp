@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "support/dense_grid.hpp"
+#include "support/skeleton_scenes.hpp"
 #include "ussnav/skeleton/connectivity_graph.hpp"
 #include "ussnav/skeleton/expansion.hpp"
 #include "ussnav/skeleton/sphere_sampler.hpp"
@@ -27,7 +27,7 @@ BoundarySurface handSurface(const Vec3& nexus, const Vec3& normal) {
 }  // namespace
 
 TEST(ExpandNewPolyhedron, BoxRoomVerticesAreFreeOrOnSurfaces) {
-  const BoxRoomScene scene = boxRoom(Vec3(4.0, 4.0, 2.6));
+  const BoxRoomScene scene = boxRoomGrid(Vec3(4.0, 4.0, 2.6));
   const SkeletonConfig cfg;
   const Vec3 seed(2.0, 2.0, 1.2);
   const Polyhedron p = expandNewPolyhedron(scene.grid, seed, fibonacciSphere(cfg.sphere_samples), cfg);
@@ -63,7 +63,7 @@ TEST(ExpandNewPolyhedron, BoxRoomVerticesAreFreeOrOnSurfaces) {
 }
 
 TEST(ExpandNewPolyhedron, UnknownSpaceIsContactOnlyWhenConfigured) {
-  BoxRoomScene scene = boxRoom(Vec3(4.0, 4.0, 2.6));
+  BoxRoomScene scene = boxRoomGrid(Vec3(4.0, 4.0, 2.6));
   scene.grid.hide(box(Vec3(2.6, 0, 0), Vec3(4.0, 4.0, 2.6)));  // x > 2.6 not observed yet
   SkeletonConfig cfg;
   const Vec3 seed(2.0, 2.0, 1.2);
@@ -93,7 +93,7 @@ TEST(ExpandNewPolyhedron, UnknownSpaceIsContactOnlyWhenConfigured) {
 }
 
 TEST(FindNewExpandSeed, ExtendsHalfTheFreeRunAlongTheNormal) {
-  const CorridorScene scene = corridor(10.0, 1.2, 2.4);
+  const CorridorScene scene = corridorGrid(10.0, 1.2, 2.4);
   const SkeletonConfig cfg;
   const ConnectivityGraph empty(cfg);
   // Open corridor ahead: the run is max_extension long, the seed sits in its middle.
@@ -107,7 +107,7 @@ TEST(FindNewExpandSeed, ExtendsHalfTheFreeRunAlongTheNormal) {
 }
 
 TEST(FindNewExpandSeed, RejectsUnsafeAndDefersUnknown) {
-  CorridorScene scene = corridor(10.0, 1.2, 2.4);
+  CorridorScene scene = corridorGrid(10.0, 1.2, 2.4);
   const SkeletonConfig cfg;
   const ConnectivityGraph empty(cfg);
   // Along the side wall, 0.15 m from it: closer than the robot radius.
@@ -134,7 +134,7 @@ TEST(FindNewExpandSeed, RejectsUnsafeAndDefersUnknown) {
 }
 
 TEST(FindNewExpandSeed, DropsSeedsInCoveredSpace) {
-  const CorridorScene scene = corridor(10.0, 1.2, 2.4);
+  const CorridorScene scene = corridorGrid(10.0, 1.2, 2.4);
   SkeletonConfig cfg;
   cfg.max_expansions_per_frame = 1;  // only the polyhedron at the UAV
   ConnectivityGraph g(cfg);
@@ -153,7 +153,7 @@ TEST(FindNewExpandSeed, DropsSeedsInCoveredSpace) {
 }
 
 TEST(FindUnsafeVoxel, ReportsObstacleBeforeUnknown) {
-  CorridorScene scene = corridor(10.0, 1.2, 2.4);
+  CorridorScene scene = corridorGrid(10.0, 1.2, 2.4);
   scene.grid.hide(box(Vec3(2.1, 0, 0), Vec3(3, 1.2, 2.4)));
   Vec3i k;
   VoxelState s;
@@ -166,7 +166,7 @@ TEST(FindUnsafeVoxel, ReportsObstacleBeforeUnknown) {
 }
 
 TEST(CastRayThroughGaps, PassesSensorHolesButNotUnexploredSpace) {
-  CorridorScene scene = corridor(10.0, 1.2, 2.4);
+  CorridorScene scene = corridorGrid(10.0, 1.2, 2.4);
   const Vec3 a(0.55, 0.65, 1.25), b(5.55, 0.65, 1.25);
   // One unknown voxel on the way (a hole) is passed when up to 0.2 m gaps are tolerated.
   scene.grid.set(scene.grid.keyOf(Vec3(2.05, 0.65, 1.25)), VoxelState::Unknown);
@@ -199,7 +199,7 @@ TEST(CastRayThroughGaps, PassesSensorHolesButNotUnexploredSpace) {
 }
 
 TEST(FindUnsafeVoxel, ToleratesAFewUnknownVoxels) {
-  CorridorScene scene = corridor(10.0, 1.2, 2.4);
+  CorridorScene scene = corridorGrid(10.0, 1.2, 2.4);
   const Vec3 p(2.05, 0.65, 1.25);
   scene.grid.set(scene.grid.keyOf(p + Vec3(0.1, 0, 0)), VoxelState::Unknown);
   scene.grid.set(scene.grid.keyOf(p + Vec3(0, 0.1, 0)), VoxelState::Unknown);

@@ -1,11 +1,14 @@
 #pragma once
 // The global Spatial Connectivity Graph (paper Sec. IV-A, Algorithm 1): polyhedra of free space
-// as nodes, kinematic / overlap / visible / loop edges. update() grows it incrementally from the
-// local occupancy map: it seeds at the UAV when no node covers it, pops Boundary Surfaces
-// (FindNewExpandSeed -> ExpandNewPolyhedron -> UpdateTopology) up to max_expansions_per_frame,
-// and retries surfaces that were blocked by unknown space once their probe voxel is observed.
-// Nodes and edges are never removed or moved, and outlive the map window. Deterministic: the
-// same frames give the same graph. Cost per expansion ~0.1-0.3 ms (50 rays, Qhull, SAT tests).
+// as nodes; kinematic / overlap / visible / loop edges. update() grows it incrementally from the
+// local map: a seed at the UAV when nothing covers it, then Boundary Surfaces popped
+// (FindNewExpandSeed -> ExpandNewPolyhedron -> UpdateTopology) up to max_expansions_per_frame;
+// surfaces blocked by unknown space are parked and retried once their probe voxel is observed.
+// Nodes and edges are never removed or moved and outlive the map window. Deterministic.
+// Cost: ~0.2-0.5 ms per expansion; a frame with nothing new costs microseconds.
+//
+// A polyhedron whose centre lands within min_center_distance of an existing centre is dropped,
+// as is one that cannot be linked to its parent by a clear segment or polyline.
 
 #include <cstdint>
 #include <deque>
@@ -57,7 +60,7 @@ struct GraphUpdateStats {
   int retried = 0;           // deferred surfaces whose probe was observed, re-queued
   int deferred = 0;          // surfaces parked this frame
   int dropped = 0;           // surfaces whose seed was too close / inside / unsafe
-  int rejected_polyhedra = 0;// expansions that gave a degenerate hull or no safe link
+  int rejected_polyhedra = 0;// expansions dropped: degenerate hull, centre too close, no link
   bool seeded_at_uav = false;
   double ms = 0.0;
 };

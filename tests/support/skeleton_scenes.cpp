@@ -1,90 +1,11 @@
-#include "support/dense_grid.hpp"
+#include "support/skeleton_scenes.hpp"
 
-#include <algorithm>
 #include <climits>
 #include <cmath>
 
 #include "ussnav/skeleton/sphere_sampler.hpp"
 
 namespace ussnav::test {
-
-DenseGrid::DenseGrid(const Aabb& bounds, double resolution, VoxelState fill) : res_(resolution) {
-  for (int i = 0; i < 3; ++i) {
-    lo_[i] = int(std::floor(bounds.min[i] / res_ + 1e-9));
-    const int hi = int(std::ceil(bounds.max[i] / res_ - 1e-9));
-    dims_[i] = std::max(1, hi - lo_[i]);
-  }
-  bounds_.min = lo_.cast<double>() * res_;
-  bounds_.max = (lo_ + dims_).cast<double>() * res_;
-  cells_.assign(size_t(dims_.x()) * dims_.y() * dims_.z(), uint8_t(fill));
-  resetWindow();
-}
-
-bool DenseGrid::inGrid(const Vec3i& k) const {
-  return (k.array() >= lo_.array()).all() && (k.array() < (lo_ + dims_).array()).all();
-}
-
-size_t DenseGrid::index(const Vec3i& k) const {
-  const Vec3i r = k - lo_;
-  return (size_t(r.z()) * dims_.y() + r.y()) * dims_.x() + r.x();
-}
-
-VoxelState DenseGrid::state(const Vec3i& key) const {
-  if (!inWindow(key)) return VoxelState::Unknown;
-  return VoxelState(cells_[index(key)]);
-}
-
-bool DenseGrid::inWindow(const Vec3i& key) const {
-  return (key.array() >= win_lo_.array()).all() && (key.array() <= win_hi_.array()).all();
-}
-
-Aabb DenseGrid::window() const {
-  Aabb w;
-  w.min = win_lo_.cast<double>() * res_;
-  w.max = (win_hi_ + Vec3i::Ones()).cast<double>() * res_;
-  return w;
-}
-
-void DenseGrid::fill(const Aabb& box, VoxelState s) {
-  Vec3i a, b;
-  for (int i = 0; i < 3; ++i) {
-    // Voxel k's centre (k + 0.5) * res lies in [min, max].
-    a[i] = std::max(lo_[i], int(std::ceil(box.min[i] / res_ - 0.5 - 1e-9)));
-    b[i] = std::min(lo_[i] + dims_[i] - 1, int(std::floor(box.max[i] / res_ - 0.5 + 1e-9)));
-  }
-  for (int z = a.z(); z <= b.z(); ++z)
-    for (int y = a.y(); y <= b.y(); ++y)
-      for (int x = a.x(); x <= b.x(); ++x) cells_[index(Vec3i(x, y, z))] = uint8_t(s);
-}
-
-VoxelState DenseGrid::stored(const Vec3i& key) const {
-  return inGrid(key) ? VoxelState(cells_[index(key)]) : VoxelState::Unknown;
-}
-
-void DenseGrid::set(const Vec3i& key, VoxelState s) {
-  if (inGrid(key)) cells_[index(key)] = uint8_t(s);
-}
-
-void DenseGrid::setWindow(const Aabb& w) {
-  for (int i = 0; i < 3; ++i) {
-    win_lo_[i] = std::max(lo_[i], int(std::floor(w.min[i] / res_ + 1e-9)));
-    win_hi_[i] = std::min(lo_[i] + dims_[i] - 1, int(std::ceil(w.max[i] / res_ - 1e-9)) - 1);
-  }
-}
-
-void DenseGrid::resetWindow() {
-  win_lo_ = lo_;
-  win_hi_ = lo_ + dims_ - Vec3i::Ones();
-}
-
-size_t DenseGrid::count(VoxelState s) const {
-  size_t n = 0;
-  for (int z = win_lo_.z(); z <= win_hi_.z(); ++z)
-    for (int y = win_lo_.y(); y <= win_hi_.y(); ++y)
-      for (int x = win_lo_.x(); x <= win_hi_.x(); ++x)
-        if (cells_[index(Vec3i(x, y, z))] == uint8_t(s)) ++n;
-  return n;
-}
 
 namespace {
 Aabb box(double x0, double y0, double z0, double x1, double y1, double z1) {
@@ -95,7 +16,7 @@ Aabb box(double x0, double y0, double z0, double x1, double y1, double z1) {
 }
 }  // namespace
 
-BoxRoomScene boxRoom(const Vec3& size, double resolution) {
+BoxRoomScene boxRoomGrid(const Vec3& size, double resolution) {
   const double t = 0.2;  // wall thickness
   BoxRoomScene s{DenseGrid(box(-t, -t, -t, size.x() + t, size.y() + t, size.z() + t), resolution,
                            VoxelState::Occupied),
@@ -104,7 +25,7 @@ BoxRoomScene boxRoom(const Vec3& size, double resolution) {
   return s;
 }
 
-TwoRoomsScene twoRooms(double resolution) {
+TwoRoomsScene twoRoomsGrid(double resolution) {
   // Room A: x in [0, 4], room B: x in [4.2, 8.2], y in [0, 4], z in [0, 2.6]; a 0.9 x 2.0 m door
   // at y in [1.6, 2.5].
   const double t = 0.2;
@@ -117,7 +38,7 @@ TwoRoomsScene twoRooms(double resolution) {
   return s;
 }
 
-CorridorScene corridor(double length, double width, double height, double resolution) {
+CorridorScene corridorGrid(double length, double width, double height, double resolution) {
   const double t = 0.2;
   CorridorScene s{DenseGrid(box(-t, -t, -t, length + t, width + t, height + t), resolution,
                             VoxelState::Occupied),
@@ -126,7 +47,7 @@ CorridorScene corridor(double length, double width, double height, double resolu
   return s;
 }
 
-FloorScene roomFloor(int nx, int ny, double room_size, double height, double resolution) {
+FloorScene floorGrid(int nx, int ny, double room_size, double height, double resolution) {
   const double t = 0.2;
   const double pitch = room_size + t;
   FloorScene s{DenseGrid(box(-t, -t, -t, nx * pitch, ny * pitch, height + t), resolution,

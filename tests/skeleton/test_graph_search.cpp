@@ -1,0 +1,164 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "support/skeleton_scenes.hpp"
+#include "ussnav/core/error.hpp"
+#include "ussnav/skeleton/connectivity_graph.hpp"
+#include "ussnav/skeleton/graph_search.hpp"
+#include "ussnav/skeleton/grid_path.hpp"
+
+using namespace ussnav;
+using namespace ussnav::test;
+
+namespace {
+
+Aabb box(const Vec3& lo, const Vec3& hi) {
+  Aabb b;
+  b.min = lo;
+  b.max = hi;
+  return b;
+}
+
+void grow(ConnectivityGraph& g, const OccupancyMap& map, const Vec3& uav) {
+  for (int f = 0; f < 50; ++f)
+    if (g.update(map, uav, 0.1 * f).expansions == 0 && g.queuedSurfaces() == 0) return;
+}
+
+// Every segment is free of obstacles and unknown space, sampled finely as well as by castRay.
+void expectClearPolyline(const OccupancyMap& map, const std::vector<Vec3>& pts) {
+  ASSERT_GE(pts.size(), 2u);
+  EXPECT_TRUE(polylineClear(map, pts, true));
+  for (size_t i = 1; i < pts.size(); ++i)
+    for (int k = 0; k <= 100; ++k) {
+      const Vec3 p = pts[i - 1] + (pts[i] - pts[i - 1]) * (k / 100.0);
+      EXPECT_EQ(map.stateAt(p), VoxelState::Free) << "segment " << i << " at " << p.transpose();
+    }
+}
+
+}  // namespace
+
+TEST(GraphSearch, PathBetweenRoomsGoesThroughTheDoor) {
+  const TwoRoomsScene scene = twoRoomsGrid();
+  ConnectivityGraph g;
+  grow(g, scene.grid, Vec3(1.0, 1.0, 1.2));
+  const Vec3 start(0.8, 0.7, 1.0), goal(7.5, 0.6, 1.5);
+  ASSERT_FALSE(lineOfSight(scene.grid, start, goal, false));
+  const GraphPath path = findGraphPath(g, scene.grid, start, goal);
+  ASSERT_TRUE(path.found);
+  EXPECT_EQ(path.points.front(), start);
+  EXPECT_EQ(path.points.back(), goal);
+  EXPECT_FALSE(path.nodes.empty());
+  expectClearPolyline(scene.grid, path.points);
+  // The one crossing of the wall slab is in the door.
+  Aabb door = scene.door;
+  door.min -= Vec3::Constant(1e-6);
+  door.max += Vec3::Constant(1e-6);
+  bool crossed = false;
+  for (size_t i = 1; i < path.points.size(); ++i)
+    for (int k = 0; k <= 200; ++k) {
+      const Vec3 p = path.points[i - 1] + (path.points[i] - path.points[i - 1]) * (k / 200.0);
+      if (p.x() > scene.wall_min_x && p.x() < scene.wall_max_x) {
+        crossed = true;
+        EXPECT_TRUE(door.contains(p)) << p.transpose();
+      }
+    }
+  EXPECT_TRUE(crossed);
+  // Shortcut: not much longer than going straight to the door and on to the goal.
+  const Vec3 door_mid = scene.door.center();
+  const double lower = (door_mid - start).norm() + (goal - door_mid).norm();
+  EXPECT_GE(path.length, (goal - start).norm());
+  EXPECT_LE(path.length, 1.25 * lower);
+  EXPECT_NEAR(path.length, polylineLength(path.points), 1e-9);
+}
+
+TEST(GraphSearch, DirectLineOfSightNeedsNoGraph) {
+  const BoxRoomScene scene = boxRoomGrid();
+  const ConnectivityGraph empty;
+  const GraphPath path = findGraphPath(empty, scene.grid, Vec3(0.5, 0.5, 1.0), Vec3(3.5, 3.0, 1.8));
+  ASSERT_TRUE(path.found);
+  EXPECT_EQ(path.points.size(), 2u);
+  EXPECT_TRUE(path.nodes.empty());
+}
+
+TEST(GraphSearch, SealedRoomIsUnreachable) {
+  TwoRoomsScene scene = twoRoomsGrid();
+  scene.grid.wall(scene.door);  // no door
+  ConnectivityGraph g;
+  grow(g, scene.grid, Vec3(1.0, 1.0, 1.2));
+  grow(g, scene.grid, Vec3(6.0, 2.0, 1.2));  // the UAV is put into room B: a second component
+  ASSERT_GT(g.size(), 4u);
+  EXPECT_FALSE(findGraphPath(g, scene.grid, Vec3(1.0, 1.0, 1.2), Vec3(6.0, 2.0, 1.2)).found);
+  // Within each room paths exist.
+  EXPECT_TRUE(findGraphPath(g, scene.grid, Vec3(0.5, 0.5, 1.2), Vec3(3.5, 3.5, 0.6)).found);
+  EXPECT_TRUE(findGraphPath(g, scene.grid, Vec3(4.8, 0.5, 1.2), Vec3(7.6, 3.6, 2.0)).found);
+}
+
+TEST(GraphSearch, AvoidsEdgesThatTheCurrentMapBlocks) {
+  CorridorScene scene = corridorGrid(10.0, 1.2, 2.4);
+  ConnectivityGraph g;
+  grow(g, scene.grid, Vec3(0.6, 0.6, 1.2));
+  const Vec3 start(0.6, 0.6, 1.2), goal(9.4, 0.6, 1.2);
+  ASSERT_TRUE(findGraphPath(g, scene.grid, start, goal).found);
+  // Something now closes the corridor in the middle: the graph still has its edges there, but
+  // the search re-checks them against the current map.
+  scene.grid.wall(box(Vec3(4.9, 0, 0), Vec3(5.1, 1.2, 2.4)));
+  EXPECT_FALSE(findGraphPath(g, scene.grid, start, goal).found);
+  // A path on one side is unaffected.
+  const GraphPath near = findGraphPath(g, scene.grid, start, Vec3(4.5, 0.3, 0.5));
+  ASSERT_TRUE(near.found);
+  expectClearPolyline(scene.grid, near.points);
+}
+
+TEST(GraphSearch, ShortcutsAroundAnL) {
+  // An L-shaped pair of corridors: the path turns once and stays clear.
+  DenseGrid grid(box(Vec3(-0.2, -0.2, -0.2), Vec3(6.2, 6.2, 2.6)), 0.1, VoxelState::Occupied);
+  grid.carve(box(Vec3(0, 0, 0), Vec3(6.0, 1.4, 2.4)));
+  grid.carve(box(Vec3(4.6, 0, 0), Vec3(6.0, 6.0, 2.4)));
+  ConnectivityGraph g;
+  grow(g, grid, Vec3(0.7, 0.7, 1.2));
+  const GraphPath path = findGraphPath(g, grid, Vec3(0.5, 0.7, 1.2), Vec3(5.3, 5.5, 1.2));
+  ASSERT_TRUE(path.found);
+  expectClearPolyline(grid, path.points);
+  // One bend is enough after shortcutting; the raw node chain has more points.
+  EXPECT_LE(path.points.size(), 4u);
+  EXPECT_LE(path.length, 1.2 * ((Vec3(5.3, 0.7, 1.2) - Vec3(0.5, 0.7, 1.2)).norm() + 4.8));
+  EXPECT_THROW(findGraphPath(g, grid, Vec3(std::nan(""), 0, 0), Vec3::Zero()), InputError);
+}
+
+TEST(GridPath, FindsShortPathsAroundWallsOnly) {
+  const TwoRoomsScene scene = twoRoomsGrid();
+  const Vec3 a(3.6, 1.2, 1.0), b(4.6, 1.2, 1.0);  // either side of the wall, near the door
+  ASSERT_FALSE(lineOfSight(scene.grid, a, b, true));
+  const auto path = gridPath(scene.grid, a, b, 3.0);
+  ASSERT_TRUE(path.has_value());
+  EXPECT_EQ(path->front(), a);
+  EXPECT_EQ(path->back(), b);
+  EXPECT_TRUE(polylineClear(scene.grid, *path, true));
+  EXPECT_LE(polylineLength(*path), 3.0);
+  EXPECT_GE(polylineLength(*path), (b - a).norm());
+  // Too short a budget, or far from the door: nothing.
+  EXPECT_FALSE(gridPath(scene.grid, a, b, (b - a).norm() + 0.01).has_value());
+  EXPECT_FALSE(gridPath(scene.grid, Vec3(3.0, 0.3, 1.0), Vec3(5.2, 0.3, 1.0), 3.0).has_value());
+  // A longer budget reaches around from farther away.
+  EXPECT_TRUE(gridPath(scene.grid, Vec3(3.0, 0.3, 1.0), Vec3(5.2, 0.3, 1.0), 5.0).has_value());
+}
+
+TEST(GridPath, CoarseCellsSkipSlitsTooNarrowToFly) {
+  // A wall with a 0.2 m slit: passable voxel by voxel, not on 0.2 m cells.
+  DenseGrid grid(box(Vec3(-0.2, -0.2, -0.2), Vec3(4.2, 3.2, 2.6)), 0.1, VoxelState::Occupied);
+  grid.carve(box(Vec3(0, 0, 0), Vec3(4.0, 3.0, 2.4)));
+  grid.wall(box(Vec3(1.9, 0, 0), Vec3(2.1, 3.0, 2.4)));
+  grid.carve(box(Vec3(1.9, 1.3, 0.8), Vec3(2.1, 1.5, 1.6)));  // voxels 13-14: no 2-cell fits
+  const Vec3 a(1.5, 1.4, 1.2), b(2.5, 1.4, 1.2);
+  const auto fine = gridPath(grid, a, b, 2.0, true, 1);
+  ASSERT_TRUE(fine.has_value());
+  EXPECT_TRUE(polylineClear(grid, *fine, true));
+  EXPECT_FALSE(gridPath(grid, a, b, 2.0, true, 2).has_value());
+  // Widen it to 0.6 m: coarse cells pass too, and the result is clear voxel by voxel.
+  grid.carve(box(Vec3(1.9, 1.2, 0.8), Vec3(2.1, 1.8, 1.6)));
+  const auto coarse = gridPath(grid, a, b, 2.0, true, 2);
+  ASSERT_TRUE(coarse.has_value());
+  EXPECT_TRUE(polylineClear(grid, *coarse, true));
+  EXPECT_LE(polylineLength(*coarse), 2.0);
+}
