@@ -114,6 +114,8 @@ void runMap(const MapArgs& a) {
     sk["path_pairs"] = q.pairs;
     sk["observed_free_voxels"] = q.observed_free_voxels;
     sk["mean_path_ratio"] = q.mean_path_ratio;
+    sk["path_not_found"] = q.not_found;
+    sk["path_colliding"] = q.colliding;
     stats["skeleton"] = sk;
   }
   if (const ObjectLayer* objs = mapper.objects()) {

@@ -79,6 +79,8 @@ SkeletonQuality skeletonQuality(const ConnectivityGraph& graph, const RollingGri
     if (!gt_path) continue;  // not reachable for the UAV: not a fair pair
     ++tried;
     const GraphPath p = findGraphPath(graph, grid, a, b);
+    q.not_found += !p.found;
+    if (p.found && !polylineCollisionFree(gt, p.points)) ++q.colliding;
     if (p.found && polylineCollisionFree(gt, p.points)) {
       ++ok;
       ratio_sum += p.length / std::max(1e-6, GtPlanner::length(*gt_path));

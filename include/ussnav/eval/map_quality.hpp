@@ -38,7 +38,9 @@ struct SkeletonQuality {
   double path_success = 0.0;
   int observed_free_voxels = 0;
   int pairs = 0;
-  double mean_path_ratio = 0.0;  // graph path length / ground-truth shortest, over successes
+  double mean_path_ratio = 0.0;
+  int not_found = 0;   // pairs the graph gave no path for
+  int colliding = 0;   // pairs whose graph path crosses occupied ground truth  // graph path length / ground-truth shortest, over successes
 };
 
 // `pairs` random pairs (seeded) of observed free points that are safe for `radius` in the
