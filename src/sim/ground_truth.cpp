@@ -67,6 +67,17 @@ GroundTruthGrid::GroundTruthGrid(const World& world, double resolution, double m
     const Vec3 lo = ob.origin + c.cast<double>() * ob.resolution;
     fillKeyBox(lo, lo + Vec3::Constant(ob.resolution), kStructure);
   }
+  buildBlocks();
+}
+
+void GroundTruthGrid::buildBlocks() {
+  bdims_ = (dims_ + Vec3i::Constant(kBlock - 1)) / kBlock;
+  block_occupied_.assign(size_t(bdims_.x()) * bdims_.y() * bdims_.z(), 0);
+  for (int z = 0; z < dims_.z(); ++z)
+    for (int y = 0; y < dims_.y(); ++y)
+      for (int x = 0; x < dims_.x(); ++x)
+        if (labels_[(size_t(z) * dims_.y() + y) * dims_.x() + x] != kFree)
+          block_occupied_[(size_t(z / kBlock) * bdims_.y() + y / kBlock) * bdims_.x() + x / kBlock] = 1;
 }
 
 VoxelState GroundTruthGrid::state(const Vec3i& key) const {
@@ -150,16 +161,18 @@ void GroundTruthGrid::rasterizeBox(const OrientedBox& b, uint16_t lab) {
       }
 }
 
-GroundTruthGrid::Hit GroundTruthGrid::raycast(const Vec3& o, const Vec3& dir, double max_range) const {
-  // Amanatides-Woo DDA on the flat label array, plain arrays in the hot loop.
-  Hit h;
-  int l[3], step[3], dim[3] = {dims_.x(), dims_.y(), dims_.z()};
+bool GroundTruthGrid::walkBlock(const Vec3& o, const Vec3& dir, double t0, double max_range,
+                                const Vec3i& bkey, Hit& h) const {
+  // Local voxel coordinates of the entry point, clamped into the block (rounding at faces).
+  int l[3], lo[3], hi[3], step[3];
   double t_max[3], t_delta[3];
-  long stride[3] = {1, dims_.x(), long(dims_.x()) * dims_.y()};
+  const long stride[3] = {1, dims_.x(), long(dims_.x()) * dims_.y()};
   for (int i = 0; i < 3; ++i) {
-    const int key = int(std::floor(o[i] / res_));
-    l[i] = key - min_key_[i];
-    if (l[i] < 0 || l[i] >= dim[i]) return h;
+    lo[i] = bkey[i] * kBlock;
+    hi[i] = std::min(lo[i] + kBlock, dims_[i]) - 1;
+    const double p = o[i] + dir[i] * t0;
+    l[i] = std::clamp(int(std::floor(p / res_)) - min_key_[i], lo[i], hi[i]);
+    const int key = l[i] + min_key_[i];
     if (dir[i] > 0) {
       step[i] = 1;
       t_max[i] = ((key + 1) * res_ - o[i]) / dir[i];
@@ -174,22 +187,65 @@ GroundTruthGrid::Hit GroundTruthGrid::raycast(const Vec3& o, const Vec3& dir, do
       t_delta[i] = t_max[i];
     }
   }
-  long idx = (long(l[2]) * dim[1] + l[1]) * dim[0] + l[0];
   const uint16_t* lab = labels_.data();
+  long idx = (long(l[2]) * dims_.y() + l[1]) * dims_.x() + l[0];
+  if (t0 > 0.0 && lab[idx] != kFree) {
+    h = Hit{true, t0, lab[idx]};
+    return true;
+  }
   while (true) {
     const int axis = t_max[0] < t_max[1] ? (t_max[0] < t_max[2] ? 0 : 2) : (t_max[1] < t_max[2] ? 1 : 2);
     const double t = t_max[axis];
-    if (t > max_range) return h;
+    if (t > max_range) return false;
     l[axis] += step[axis];
-    if (unsigned(l[axis]) >= unsigned(dim[axis])) return h;
+    if (l[axis] < lo[axis] || l[axis] > hi[axis]) return false;  // left the block
     idx += step[axis] * stride[axis];
     t_max[axis] += t_delta[axis];
     if (lab[idx] != kFree) {
-      h.hit = true;
-      h.range = t;
-      h.label = lab[idx];
-      return h;
+      h = Hit{true, t, lab[idx]};
+      return true;
     }
+  }
+}
+
+GroundTruthGrid::Hit GroundTruthGrid::raycast(const Vec3& o, const Vec3& dir, double max_range) const {
+  // Two-level Amanatides-Woo DDA: blocks of kBlock^3 voxels are crossed in one step when they
+  // hold nothing; occupied blocks are walked voxel by voxel.
+  Hit h;
+  const double bres = res_ * kBlock;
+  Vec3i b;
+  int step[3];
+  double t_max[3], t_delta[3];
+  for (int i = 0; i < 3; ++i) {
+    const int l = int(std::floor(o[i] / res_)) - min_key_[i];
+    if (l < 0 || l >= dims_[i]) return h;
+    b[i] = l / kBlock;
+    const double b0 = (min_key_[i] + b[i] * kBlock) * res_;  // world coordinate of the block's low face
+    if (dir[i] > 0) {
+      step[i] = 1;
+      t_max[i] = (b0 + bres - o[i]) / dir[i];
+      t_delta[i] = bres / dir[i];
+    } else if (dir[i] < 0) {
+      step[i] = -1;
+      t_max[i] = (b0 - o[i]) / dir[i];
+      t_delta[i] = -bres / dir[i];
+    } else {
+      step[i] = 0;
+      t_max[i] = std::numeric_limits<double>::infinity();
+      t_delta[i] = t_max[i];
+    }
+  }
+  double t_entry = 0.0;
+  while (true) {
+    if (block_occupied_[(size_t(b.z()) * bdims_.y() + b.y()) * bdims_.x() + b.x()] &&
+        walkBlock(o, dir, t_entry, max_range, b, h))
+      return h;
+    const int axis = t_max[0] < t_max[1] ? (t_max[0] < t_max[2] ? 0 : 2) : (t_max[1] < t_max[2] ? 1 : 2);
+    t_entry = t_max[axis];
+    if (t_entry > max_range) return h;
+    b[axis] += step[axis];
+    if (b[axis] < 0 || b[axis] >= bdims_[axis]) return h;
+    t_max[axis] += t_delta[axis];
   }
 }
 

@@ -2,6 +2,7 @@
 
 #include "support/test_worlds.hpp"
 #include "ussnav/sim/ground_truth.hpp"
+#include "ussnav/core/random.hpp"
 #include "ussnav/sim/gt_paths.hpp"
 
 using namespace ussnav;
@@ -75,4 +76,26 @@ TEST(GtPaths, RoomsWithoutDoorAreUnreachable) {
   GtPlanner p(gt, w, 1.2, 0.25);
   EXPECT_FALSE(p.shortestPath(Vec2(2.5, 2.0), Vec2(7.5, 2.0)).has_value());
   EXPECT_FALSE(p.allRoomsConnected(w));
+}
+
+TEST(GroundTruth, BlockSkippingRaycastAgreesWithPlainDda) {
+  World w = test::twoRooms(true);
+  test::addObject(w, "table", Vec3(2.0, 2.0, 0.4), Vec3(0.6, 0.4, 0.4), 0.3);
+  GroundTruthGrid gt(w, 0.05);
+  Rng rng(5);
+  int hits = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const Vec3 o(rng.uniform(0.3, 9.7), rng.uniform(0.3, 3.7), rng.uniform(0.2, 2.6));
+    if (gt.occupiedAt(o)) continue;
+    Vec3 d(rng.normal(), rng.normal(), rng.normal());
+    d.normalize();
+    const auto fast = gt.raycast(o, d, 8.0);
+    const RayHit plain = castRay(gt, o, o + d * 8.0, false);
+    ASSERT_EQ(fast.hit, plain.blocked) << i;
+    if (fast.hit) {
+      ++hits;
+      EXPECT_NEAR(fast.range, plain.distance, 1e-6) << i;
+    }
+  }
+  EXPECT_GT(hits, 2000);
 }

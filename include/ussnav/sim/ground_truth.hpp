@@ -60,8 +60,16 @@ class GroundTruthGrid : public OccupancyMap {
   void rasterizeBox(const OrientedBox& b, uint16_t label);
   void fillKeyBox(const Vec3& lo, const Vec3& hi, uint16_t label);
 
+  void buildBlocks();
+  // Voxel DDA from o along dir, starting at parameter t0 (t0 > 0: the voxel there is tested
+  // too), confined to block `bkey` (kBlock^3 voxels). Returns true on a hit (filled into h).
+  bool walkBlock(const Vec3& o, const Vec3& dir, double t0, double max_range, const Vec3i& bkey, Hit& h) const;
+
+  static constexpr int kBlock = 8;  // empty-space skipping: blocks of 8^3 voxels
   double res_;
   Vec3i min_key_, dims_;
+  Vec3i bdims_;
+  std::vector<uint8_t> block_occupied_;
   Aabb bounds_;
   std::vector<uint16_t> labels_;
   std::vector<int> instance_of_label_;  // label -> object id
