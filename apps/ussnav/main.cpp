@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <iostream>
 
@@ -45,19 +46,41 @@ CLI::App* subcommandGroup(CLI::App& parent, const std::string& name, const std::
   return g;
 }
 
+namespace {
+// Without a terminal (CI logs, files) progress lines are rate-limited to one per 5 s; the last
+// one is always printed by progressDone().
+std::string g_pending;
+std::chrono::steady_clock::time_point g_last_print{};
+}  // namespace
+
 void progress(const std::string& line) {
   if (globals().quiet) return;
   static const bool tty = ::isatty(2);
-  if (tty)
+  if (tty) {
     std::fprintf(stderr, "\r\033[K%s", line.c_str());
-  else
+  } else {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - g_last_print < std::chrono::seconds(5)) {
+      g_pending = line;
+      return;
+    }
+    g_last_print = now;
+    g_pending.clear();
     std::fprintf(stderr, "%s\n", line.c_str());
+  }
   std::fflush(stderr);
 }
 
 void progressDone() {
   static const bool tty = ::isatty(2);
-  if (tty && !globals().quiet) std::fprintf(stderr, "\n");
+  if (globals().quiet) return;
+  if (tty) {
+    std::fprintf(stderr, "\n");
+  } else if (!g_pending.empty()) {
+    std::fprintf(stderr, "%s\n", g_pending.c_str());
+    g_pending.clear();
+  }
+  g_last_print = {};
 }
 
 }  // namespace ussnav::cli
