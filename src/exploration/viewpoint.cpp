@@ -7,16 +7,19 @@ namespace ussnav {
 
 namespace {
 
+// Range and vertical field of view: cheap, tried before the ray cast.
+bool inRangeAndVfov(const Vec3& d, const ExplorationConfig& cfg) {
+  return d.norm() <= cfg.sensor_range &&
+         std::abs(std::atan2(d.z(), std::hypot(d.x(), d.y()))) <= 0.5 * deg2rad(cfg.sensor_vfov_deg);
+}
+
 // The yaw-independent part of visibility: range, vertical field of view, line of sight.
 // Sets `azimuth` of the cell seen from p.
 bool seenIgnoringYaw(const RollingGrid& grid, const Vec3& p, const Vec3i& key, const ExplorationConfig& cfg,
                      double& azimuth) {
   const Vec3 c = grid.centerOf(key);
   const Vec3 d = c - p;
-  if (d.norm() > cfg.sensor_range) return false;
-  const double horiz = std::hypot(d.x(), d.y());
-  if (std::abs(std::atan2(d.z(), horiz)) > 0.5 * deg2rad(cfg.sensor_vfov_deg)) return false;
-  if (!grid.lineOfSight(p, c, /*unknown_blocks=*/true)) return false;
+  if (!inRangeAndVfov(d, cfg) || !grid.lineOfSight(p, c, /*unknown_blocks=*/true)) return false;
   azimuth = std::atan2(d.y(), d.x());
   return true;
 }
@@ -43,7 +46,9 @@ std::vector<Viewpoint> computeViewpoints(const RollingGrid& grid, const std::vec
                                          const Vec3& centroid, const ExplorationConfig& cfg) {
   std::vector<Viewpoint> out;
   std::vector<double> az;
+  std::vector<const Vec3i*> near;
   az.reserve(cells.size());
+  near.reserve(cells.size());
   const int n_phi = std::max(1, int(std::lround(360.0 / cfg.viewpoint_dphi_deg)));
   const int n_yaw = std::max(1, int(std::lround(360.0 / cfg.yaw_step_deg)));
   for (int ring = 0; ring < cfg.viewpoint_rings; ++ring) {
@@ -55,10 +60,16 @@ std::vector<Viewpoint> computeViewpoints(const RollingGrid& grid, const std::vec
       const double phi = 2 * kPi * k / n_phi;
       const Vec3 p(centroid.x() + r * std::cos(phi), centroid.y() + r * std::sin(phi), cfg.viewpoint_height);
       if (!viewpointSafe(grid, p, cfg)) continue;
+      // Ray casts dominate: only for cells in range, and not once the position cannot reach
+      // min_viewpoint_gain (the result is the same).
+      near.clear();
+      for (const Vec3i& c : cells)
+        if (inRangeAndVfov(grid.centerOf(c) - p, cfg)) near.push_back(&c);
       az.clear();
-      for (const Vec3i& c : cells) {
-        double a = 0.0;
-        if (seenIgnoringYaw(grid, p, c, cfg, a)) az.push_back(a);
+      for (size_t i = 0; i < near.size(); ++i) {
+        if (int(az.size() + near.size() - i) < cfg.min_viewpoint_gain) break;
+        const Vec3 c = grid.centerOf(*near[i]);
+        if (grid.lineOfSight(p, c, /*unknown_blocks=*/true)) az.push_back(std::atan2(c.y() - p.y(), c.x() - p.x()));
       }
       if (int(az.size()) < cfg.min_viewpoint_gain || az.empty()) continue;
       Viewpoint best{p, 0.0, -1};
