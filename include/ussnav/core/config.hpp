@@ -230,6 +230,43 @@ struct RegionsConfig {
   }
 };
 
+struct ExplorationConfig {
+  double band_z_min = 0.3;          // frontier cells: voxel centre z in [band_z_min, band_z_max], m
+  double band_z_max = 2.1;
+  int min_cluster_cells = 20;       // smaller connected groups of frontier cells are not frontiers
+  double max_cluster_extent = 2.0;  // split a cluster (PCA) while longer than this along its axis, m
+  double viewpoint_height = 1.2;    // viewpoints at this z (flight height), m
+  double viewpoint_r_min = 1.5;     // viewpoint rings around the centroid, m (FUEL)
+  double viewpoint_r_max = 2.5;
+  int viewpoint_rings = 3;
+  double viewpoint_dphi_deg = 15.0; // angular step on a ring, degrees
+  double viewpoint_clearance = 0.3; // no occupied or unknown voxel within this of a viewpoint, m
+  double sensor_range = 4.5;        // gain: frontier cells within this range, m
+  double sensor_hfov_deg = 87.0;    // ... and inside this field of view
+  double sensor_vfov_deg = 58.0;
+  double yaw_step_deg = 5.0;        // yaws tried per viewpoint
+  int min_viewpoint_gain = 10;      // viewpoints seeing fewer frontier cells are dropped
+  int max_viewpoints = 10;          // best viewpoints kept per frontier
+  template <class V> void visit(V& v) {
+    v.field("band_z_min", band_z_min, -100.0, 100.0, "m");
+    v.field("band_z_max", band_z_max, -100.0, 100.0, "m");
+    v.field("min_cluster_cells", min_cluster_cells, 1, 1000000, "cells");
+    v.field("max_cluster_extent", max_cluster_extent, 0.2, 100.0, "m");
+    v.field("viewpoint_height", viewpoint_height, -100.0, 100.0, "m");
+    v.field("viewpoint_r_min", viewpoint_r_min, 0.0, 20.0, "m");
+    v.field("viewpoint_r_max", viewpoint_r_max, 0.0, 20.0, "m");
+    v.field("viewpoint_rings", viewpoint_rings, 1, 100, "rings");
+    v.field("viewpoint_dphi_deg", viewpoint_dphi_deg, 1.0, 180.0, "degrees");
+    v.field("viewpoint_clearance", viewpoint_clearance, 0.0, 2.0, "m");
+    v.field("sensor_range", sensor_range, 0.1, 100.0, "m");
+    v.field("sensor_hfov_deg", sensor_hfov_deg, 1.0, 360.0, "degrees");
+    v.field("sensor_vfov_deg", sensor_vfov_deg, 1.0, 180.0, "degrees");
+    v.field("yaw_step_deg", yaw_step_deg, 0.5, 90.0, "degrees");
+    v.field("min_viewpoint_gain", min_viewpoint_gain, 0, 1000000, "cells");
+    v.field("max_viewpoints", max_viewpoints, 1, 10000, "viewpoints");
+  }
+};
+
 struct Config {
   SimConfig sim;
   MappingConfig mapping;
@@ -237,6 +274,7 @@ struct Config {
   PerceptionConfig perception;
   ObjectsConfig objects;
   RegionsConfig regions;
+  ExplorationConfig exploration;
   template <class V> void visit(V& v) {
     v.section("sim", sim);
     v.section("mapping", mapping);
@@ -244,6 +282,7 @@ struct Config {
     v.section("perception", perception);
     v.section("objects", objects);
     v.section("regions", regions);
+    v.section("exploration", exploration);
   }
 };
 

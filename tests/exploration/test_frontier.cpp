@@ -1,0 +1,287 @@
+// Frontier finder on grids mapped from analytic scenes: the incremental cell set against a
+// brute-force scan, Coverage Mask suppression, PCA splitting, persistence outside the window.
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <cstdio>
+#include <set>
+
+#include "support/mapping_scenes.hpp"
+#include "ussnav/core/error.hpp"
+#include "ussnav/exploration/frontier.hpp"
+
+using namespace ussnav;
+using test::BoxScene;
+
+namespace {
+
+Intrinsics d455(int w, int h) { return Intrinsics::fromFov(w, h, deg2rad(87), deg2rad(58)); }
+
+// Moves, inserts a depth frame, updates GCM then frontiers, clears the log: one driver frame.
+struct Driver {
+  RollingGrid grid;
+  CoverageMask gcm;
+  FrontierFinder finder;
+  double t = 0.0;
+  explicit Driver(const ExplorationConfig& cfg = {}, const Vec3& start = Vec3(0, 0, 1.2))
+      : grid(GridConfig{}, start), gcm(CoverageConfig{}, grid.resolution()), finder(cfg) {}
+  FrontierUpdate depth(const BoxScene& scene, const Vec3& p, double yaw, int node = 0) {
+    grid.moveTo(p);
+    grid.insertDepth(test::renderDepth(scene, d455(80, 60), test::cameraPose(p, yaw), 5.0));
+    return finish(node);
+  }
+  FrontierUpdate scan(const BoxScene& scene, const Vec3& p, double vmin, double vmax, int n = 20000) {
+    grid.moveTo(p);
+    grid.insertScan(test::renderScan(scene, p, n, vmin, vmax, 40.0));
+    return finish(0);
+  }
+  FrontierUpdate finish(int node) {
+    gcm.update(grid);
+    const FrontierUpdate up = finder.update(grid, gcm, node, t);
+    t += 0.1;
+    grid.clearChanges();
+    return up;
+  }
+};
+
+uint64_t pk(const Vec3i& k) { return FrontierFinder::pack(k); }
+
+// Independent statement of the rule: Free, centre in the band, an Unknown 6-neighbour (outside
+// the window reads Unknown), coverage cell not visited.
+bool bruteFrontier(const RollingGrid& g, const CoverageMask& gcm, const Vec3i& k, const ExplorationConfig& cfg) {
+  if (g.state(k) != VoxelState::Free) return false;
+  const double zc = (k.z() + 0.5) * g.resolution();
+  if (zc < cfg.band_z_min - 1e-9 || zc > cfg.band_z_max + 1e-9) return false;
+  bool unk = false;
+  for (int a = 0; a < 3; ++a)
+    for (int s = -1; s <= 1; s += 2) {
+      Vec3i n = k;
+      n[a] += s;
+      unk |= g.state(n) == VoxelState::Unknown;
+    }
+  return unk && !gcm.isVisited(gcm.cellOfKey(k));
+}
+
+// Compares every in-window known voxel (outer layer: frontier implies brute force); returns how many frontier cells in the window are Unknown
+// (persisted cells that re-entered the window unseen).
+int expectCellsMatchBruteForce(const Driver& d, const ExplorationConfig& cfg, const char* what) {
+  const RollingGrid& g = d.grid;
+  int mismatches = 0, brute = 0, unknown_kept = 0;
+  const Vec3i lo = g.minKey(), hi = g.minKey() + g.dims();
+  for (int z = lo.z(); z < hi.z(); ++z)
+    for (int y = lo.y(); y < hi.y(); ++y)
+      for (int x = lo.x(); x < hi.x(); ++x) {
+        const Vec3i k(x, y, z);
+        const bool have = d.finder.isFrontierCell(k);
+        if (g.stateFast(k) == VoxelState::Unknown) {
+          unknown_kept += have;
+          continue;
+        }
+        const bool want = bruteFrontier(g, d.gcm, k, cfg);
+        brute += want;
+        // On the outer layer only voxels a frame touched are judged: frontier => brute force.
+        const bool outer = (k.array() == lo.array()).any() || (k.array() == (hi - Vec3i::Ones()).array()).any();
+        if (outer && !want && have) ++mismatches;
+        if (outer) continue;
+        if (have != want && ++mismatches <= 5)
+          ADD_FAILURE() << what << ": voxel " << k.transpose() << " finder " << have << " brute force " << want;
+      }
+  EXPECT_EQ(mismatches, 0) << what;
+  std::printf("[ %s ] %d frontier cells in window (brute force), %d unknown kept, %zu cells, %zu frontiers\n",
+              what, brute, unknown_kept, d.finder.cellCount(), d.finder.frontiers().size());
+  return unknown_kept;
+}
+
+double principalExtent(const std::vector<Vec3i>& cells, double res) {
+  Vec3 mean = Vec3::Zero();
+  for (const Vec3i& c : cells) mean += c.cast<double>();
+  mean /= double(cells.size());
+  Mat3 cov = Mat3::Zero();
+  for (const Vec3i& c : cells) cov += (c.cast<double>() - mean) * (c.cast<double>() - mean).transpose();
+  const Vec3 axis = Eigen::SelfAdjointEigenSolver<Mat3>(cov).eigenvectors().col(2);
+  double lo = 1e300, hi = -1e300;
+  for (const Vec3i& c : cells) {
+    const double t = (c.cast<double>() - mean).dot(axis);
+    lo = std::min(lo, t);
+    hi = std::max(hi, t);
+  }
+  return (hi - lo) * res;
+}
+
+// Structural invariants of the clusters.
+void expectClustersConsistent(const FrontierFinder& f, double res) {
+  std::set<uint64_t> seen;
+  int last_id = -1;
+  for (const Frontier& fr : f.frontiers()) {
+    EXPECT_GT(fr.id, last_id);
+    last_id = fr.id;
+    ASSERT_FALSE(fr.cells.empty());
+    Vec3 c = Vec3::Zero();
+    for (const Vec3i& k : fr.cells) {
+      EXPECT_TRUE(f.isFrontierCell(k));
+      EXPECT_TRUE(seen.insert(pk(k)).second) << "cell in two frontiers";
+      c += (k.cast<double>() + Vec3::Constant(0.5)) * res;
+      EXPECT_TRUE(fr.box.contains((k.cast<double>() + Vec3::Constant(0.5)) * res));
+    }
+    EXPECT_LT((c / double(fr.cells.size()) - fr.centroid).norm(), 1e-9);
+    EXPECT_LE(principalExtent(fr.cells, res), f.config().max_cluster_extent + 1e-9);
+    for (size_t i = 1; i < fr.viewpoints.size(); ++i) EXPECT_GE(fr.viewpoints[i - 1].gain, fr.viewpoints[i].gain);
+  }
+}
+
+// 12 x 6 m furnished room: the 8 m window must roll to hold it.
+BoxScene longRoom() { return test::boxRoom(Vec3(-3.03, -2.87, 0.0), Vec3(9.03, 2.91, 2.73)); }
+
+}  // namespace
+
+TEST(Frontier, CellsMatchBruteForceAcrossInsertionsAndRolls) {
+  const BoxScene scene = longRoom();
+  const ExplorationConfig cfg;
+  Driver d(cfg);
+  int frames = 0;
+  for (int i = 0; i <= 12; ++i) {
+    const Vec3 p(0.5 * i, 0.3 * std::sin(i), 1.2);
+    d.depth(scene, p, 0.9 * i, i);
+    ++frames;
+    if (i % 3 == 0) {
+      const int kept = expectCellsMatchBruteForce(d, cfg, ("frame " + std::to_string(i)).c_str());
+      if (i == 0) {
+        EXPECT_EQ(kept, 0);  // no roll yet: nothing can re-enter unseen
+      }
+      expectClustersConsistent(d.finder, d.grid.resolution());
+    }
+  }
+  EXPECT_GT(d.finder.frontiers().size(), 0u);
+  EXPECT_EQ(frames, 13);
+  // A LiDAR scan (whole window changes) and a frame with nothing new keep the invariant.
+  d.scan(scene, Vec3(4.0, 0.0, 1.2), -7, 52, 5000);
+  expectCellsMatchBruteForce(d, cfg, "after scan");
+  const FrontierUpdate idle = d.finish(0);
+  EXPECT_EQ(idle.cells_added + idle.cells_removed, 0);
+  EXPECT_TRUE(idle.added.empty() && idle.removed.empty());
+  expectClustersConsistent(d.finder, d.grid.resolution());
+}
+
+TEST(Frontier, MissedChangesTriggerFullRescan) {
+  const BoxScene scene = longRoom();
+  const ExplorationConfig cfg;
+  Driver d(cfg);
+  EXPECT_TRUE(d.depth(scene, Vec3(0, 0, 1.2), 0.0).full_rescan);
+  // Two frames whose changes the finder never sees.
+  d.grid.insertDepth(test::renderDepth(scene, d455(80, 60), test::cameraPose(Vec3(0, 0, 1.2), 2.0), 5.0));
+  d.gcm.update(d.grid);
+  d.grid.clearChanges();
+  d.grid.insertDepth(test::renderDepth(scene, d455(80, 60), test::cameraPose(Vec3(0, 0, 1.2), 4.0), 5.0));
+  const FrontierUpdate up = d.finish(0);
+  EXPECT_TRUE(up.full_rescan);
+  expectCellsMatchBruteForce(d, cfg, "after missed changes");
+}
+
+TEST(Frontier, VisitedCoverageCellsSuppressFrontiers) {
+  const BoxScene scene = test::boxRoom(Vec3(-3.03, -2.87, 0.0), Vec3(3.03, 2.91, 2.73));
+  const ExplorationConfig cfg;
+  Driver d(cfg);
+  FrontierFinder blind(cfg);                               // sees a mask that never marks visits
+  const CoverageMask never(CoverageConfig{}, d.grid.resolution());
+  for (int i = 0; i < 8; ++i) {
+    const Vec3 p(0.2 * std::cos(i), 0.2 * std::sin(i), 1.2);
+    d.grid.moveTo(p);
+    d.grid.insertDepth(test::renderDepth(scene, d455(80, 60), test::cameraPose(p, i * kPi / 4), 5.0));
+    d.gcm.update(d.grid);
+    d.finder.update(d.grid, d.gcm, 0, i);
+    blind.update(d.grid, never, 0, i);
+    d.grid.clearChanges();
+  }
+  ASSERT_GT(d.gcm.visitedCount(), 0u);
+  int suppressed = 0;
+  for (const Vec3i& k : blind.frontierCells()) {
+    const bool visited = d.gcm.isVisited(d.gcm.cellOfKey(k));
+    if (visited) {
+      ++suppressed;
+      EXPECT_FALSE(d.finder.isFrontierCell(k));
+    } else {
+      EXPECT_TRUE(d.finder.isFrontierCell(k));
+    }
+  }
+  std::printf("visited cells %zu, frontier cells %zu without the mask, %zu with it (%d suppressed)\n",
+              d.gcm.visitedCount(), blind.cellCount(), d.finder.cellCount(), suppressed);
+  EXPECT_GT(suppressed, 0);
+  EXPECT_EQ(size_t(suppressed) + d.finder.cellCount(), blind.cellCount());
+  expectCellsMatchBruteForce(d, cfg, "with mask");
+}
+
+TEST(Frontier, LargeClustersAreSplitByPca) {
+  // A LiDAR limited to +-5 degrees carves a thin free slab: its top and bottom faces are two
+  // frontier sheets about 7 x 7 m, far above the split size.
+  const BoxScene scene = test::boxRoom(Vec3(-3.5, -3.5, 0.0), Vec3(3.5, 3.5, 2.8), 0.2, false);
+  ExplorationConfig cfg;
+  cfg.band_z_min = 0.0;
+  cfg.band_z_max = 2.8;
+  cfg.min_viewpoint_gain = 1000000;  // viewpoints are not under test here
+  Driver split(cfg);
+  ExplorationConfig whole_cfg = cfg;
+  whole_cfg.max_cluster_extent = 100.0;
+  Driver whole(whole_cfg);
+  split.scan(scene, Vec3(0, 0, 1.4), -5, 5);
+  whole.scan(scene, Vec3(0, 0, 1.4), -5, 5);
+  expectClustersConsistent(split.finder, 0.1);
+  size_t big = 0, split_cells = 0, whole_cells = 0;
+  double largest = 0.0;
+  for (const Frontier& f : whole.finder.frontiers()) {
+    whole_cells += f.cells.size();
+    largest = std::max(largest, principalExtent(f.cells, 0.1));
+    big += principalExtent(f.cells, 0.1) > 2.0;
+  }
+  for (const Frontier& f : split.finder.frontiers()) split_cells += f.cells.size();
+  std::printf("unsplit: %zu clusters (largest %.2f m), split: %zu frontiers\n", whole.finder.frontiers().size(),
+              largest, split.finder.frontiers().size());
+  EXPECT_GE(big, 1u);
+  EXPECT_GT(largest, 6.0);
+  EXPECT_EQ(split_cells, whole_cells);  // splitting loses no cell
+  EXPECT_GE(split.finder.frontiers().size(), whole.finder.frontiers().size() + 2 * 9);
+}
+
+TEST(Frontier, PersistOutsideWindowAndVanishWhenKnown) {
+  // Corridor along +x: looking down it from x = 10, the free space stops at the window's edge
+  // (x = 14) and the frontier there is open corridor.
+  const BoxScene scene = test::corridor(30.0, 3.0, 2.7);
+  const ExplorationConfig cfg;
+  Driver d(cfg);
+  d.depth(scene, Vec3(10, 0, 1.2), 0.0, 7);
+  std::vector<Frontier> far;
+  for (const Frontier& f : d.finder.frontiers())
+    if (f.centroid.x() > 13.0) far.push_back(f);
+  ASSERT_FALSE(far.empty());
+  for (const Frontier& f : far) EXPECT_EQ(f.anchor_node, 7);
+  // Fly back 8 m: the window leaves them behind.
+  for (double x = 9.5; x >= 2.0; x -= 0.5) d.depth(scene, Vec3(x, 0, 1.2), kPi, 8);
+  for (const Frontier& f : far) {
+    EXPECT_FALSE(d.grid.inWindow(d.grid.keyOf(f.centroid)));
+    const Frontier* now = d.finder.find(f.id);
+    ASSERT_NE(now, nullptr) << "frontier " << f.id << " did not persist";
+    EXPECT_EQ(now->cells, f.cells);
+    EXPECT_EQ(now->anchor_node, 7);
+    EXPECT_EQ(now->viewpoints.size(), f.viewpoints.size());
+  }
+  // Come back and look past them: their cells become known and the frontiers go.
+  for (double x = 2.5; x <= 14.0; x += 0.5) d.depth(scene, Vec3(x, 0, 1.2), 0.0, 9);
+  for (const Frontier& f : far) EXPECT_EQ(d.finder.find(f.id), nullptr) << "frontier " << f.id << " stayed";
+  for (const Frontier& f : far)
+    for (const Vec3i& k : f.cells)
+      if (d.grid.state(k) != VoxelState::Unknown) {
+        EXPECT_EQ(d.finder.isFrontierCell(k), bruteFrontier(d.grid, d.gcm, k, cfg));
+      }
+  expectCellsMatchBruteForce(d, cfg, "corridor end");
+}
+
+TEST(Frontier, RejectsEmptyBand) {
+  ExplorationConfig cfg;
+  cfg.band_z_min = 2.0;
+  cfg.band_z_max = 1.0;
+  EXPECT_THROW(FrontierFinder{cfg}, InputError);
+  cfg = {};
+  cfg.viewpoint_r_min = 3.0;
+  EXPECT_THROW(FrontierFinder{cfg}, InputError);
+}
