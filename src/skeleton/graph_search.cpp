@@ -22,7 +22,15 @@ std::vector<int> attachNodes(const ConnectivityGraph& g, const OccupancyMap& map
     const int n = g.nearestNode(p);
     if (n >= 0) near.push_back(n);
   }
+  // 1. Polyhedra that contain p: the segment to the centre stays inside convex free space,
+  //    which holds wherever the map window has moved on.
+  std::vector<int> inside;
+  for (int id : near)
+    if (g.node(id).polyhedron.contains(p)) inside.push_back(id);
+  if (!inside.empty()) return inside;
   if (int(near.size()) > opt.attach_candidates) near.resize(size_t(opt.attach_candidates));
+  // 2. Line of sight through known free space; 3. only where the map knows nothing (outside
+  //    the window), a straight segment through unobserved space.
   for (bool unknown_blocks : {true, false}) {
     std::vector<int> out;
     for (int id : near)
