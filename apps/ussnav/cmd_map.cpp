@@ -15,6 +15,7 @@
 #include "ussnav/mapping/map_drawing.hpp"
 #include "ussnav/perception/oracle_detector.hpp"
 #include "ussnav/pipeline/mapper.hpp"
+#include "ussnav/regions/partition_metrics.hpp"
 #include "ussnav/sim/simulator.hpp"
 #include "ussnav/sim/trajectory.hpp"
 #include "ussnav/sim/uav.hpp"
@@ -117,6 +118,21 @@ void runMap(const MapArgs& a) {
     sk["path_not_found"] = q.not_found;
     sk["path_colliding"] = q.colliding;
     stats["skeleton"] = sk;
+    // Regions against the rooms: every node whose centre lies in a room.
+    std::vector<int> pred, truth;
+    for (const auto& n : mapper.graph().nodes()) {
+      const Room* room = world.roomAt(n.center.head<2>());
+      const int r = mapper.regions().regionOf(n.id);
+      if (!room || r < 0) continue;
+      pred.push_back(r);
+      truth.push_back(room->id);
+    }
+    nlohmann::json rj = {{"count", mapper.regions().regions().size()}, {"nodes_evaluated", pred.size()}};
+    if (!pred.empty() && !world.rooms.empty()) {
+      rj["purity"] = purity(pred, truth);
+      rj["ari"] = adjustedRandIndex(pred, truth);
+    }
+    stats["regions"] = rj;
   }
   if (const ObjectLayer* objs = mapper.objects()) {
     stats["objects"] = {{"count", objs->objects().size()}, {"confirmed", objs->confirmedCount()}};
@@ -131,6 +147,14 @@ void runMap(const MapArgs& a) {
   drawWorldOutline(img, view, world);
   drawGridSlice(img, view, mapper.grid(), z - 0.2, z + 0.2);
   if (a.skeleton) {
+    // Regions: the convex outline of each region's node centres, tinted.
+    for (const auto& [rid, region] : mapper.regions().regions()) {
+      std::vector<Vec2> pts;
+      for (int n : region.nodes) pts.push_back(view.toPx(mapper.graph().node(n).center));
+      if (pts.size() >= 3) img.fillPolygon(convexOutline2d(pts), paletteColor(rid), 0.25);
+      const Vec2 c = view.toPx(region.centroid);
+      img.text(int(c.x()) - 6, int(c.y()) - 4, "R" + std::to_string(rid), {60, 60, 60});
+    }
     GraphDrawOptions go;
     drawConnectivityGraph(img, view, mapper.graph(), go);
   }
@@ -158,9 +182,15 @@ void runMap(const MapArgs& a) {
               mapper.grid().memoryBytes() / 1e6, mapper.coverage().visitedCount(), mapper.coverage().exploredArea(),
               mapper.coverage().bytesPerExploredSquareMetre());
   if (a.skeleton)
+  {
     std::printf("skeleton: %d nodes, free-space coverage %.3f, path success %.3f (%d pairs)\n",
                 stats["skeleton"]["nodes"].get<int>(), stats["skeleton"]["free_space_coverage"].get<double>(),
                 stats["skeleton"]["path_success"].get<double>(), stats["skeleton"]["path_pairs"].get<int>());
+    const auto& rj = stats["regions"];
+    if (rj.contains("purity"))
+      std::printf("regions: %d, purity %.3f, ARI %.3f against the world's rooms\n", rj["count"].get<int>(),
+                  rj["purity"].get<double>(), rj["ari"].get<double>());
+  }
   for (const auto& [stage, v] : stats["stage_ms"].items())
     std::printf("  %-10s median %7.2f ms  p95 %7.2f ms\n", stage.c_str(), v["median"].get<double>(), v["p95"].get<double>());
   std::printf("wrote %s/map.png and %s/stats.json\n", a.out.c_str(), a.out.c_str());

@@ -8,7 +8,8 @@ Mapper::Mapper(const Config& cfg, MapperOptions opt, std::unique_ptr<Detector> d
       grid_(cfg.mapping.grid),
       coverage_(cfg.mapping.coverage, cfg.mapping.grid.resolution),
       graph_(cfg.skeleton),
-      detector_(std::move(detector)) {
+      detector_(std::move(detector)),
+      regions_(cfg.regions) {
   if (opt_.objects && detector_) {
     encoder_ = std::shared_ptr<const TextEncoder>(makeTextEncoder(cfg.perception));
     objects_ = std::make_unique<ObjectLayer>(cfg.objects, encoder_);
@@ -45,13 +46,28 @@ MapperFrameReport Mapper::process(const MapperFrame& f) {
     rep.graph = graph_.update(grid_, f.pose.position, f.time);
     times_.add("skeleton", sw.ms());
   }
+  if (opt_.skeleton && opt_.regions &&
+      (graph_.size() != partitioned_nodes_ || graph_.edges().size() != partitioned_edges_)) {
+    // Regions only when the graph changed: new nodes plus their neighbourhood are re-partitioned.
+    const Stopwatch sw;
+    const WeightedGraphView view = makeGraphView(
+        graph_.nodes(), [](const ScgNode& n) { return std::make_pair(n.id, n.center); }, graph_.edges(),
+        [](const ScgEdge& e) { return std::make_tuple(e.a, e.b, e.weight); });
+    std::vector<int> fresh;
+    for (size_t id = partitioned_nodes_; id < graph_.size(); ++id) fresh.push_back(int(id));
+    rep.regions = regions_.update(view, fresh);
+    partitioned_nodes_ = graph_.size();
+    partitioned_edges_ = graph_.edges().size();
+    if (objects_) objects_->setRegionOf([this](int node) { return regions_.regionOf(node); });
+    times_.add("regions", sw.ms());
+  }
   if (objects_ && f.depth) {
     Stopwatch sw;
     const std::vector<Detection> dets = detector_->detect(*f.depth);
     times_.add("perception", sw.ms());
     const Stopwatch sw2;
     const int node = anchorNode(f.pose.position);
-    rep.objects = objects_->integrate(dets, *f.depth, node, -1, f.time);
+    rep.objects = objects_->integrate(dets, *f.depth, node, node >= 0 ? regions_.regionOf(node) : -1, f.time);
     times_.add("objects", sw2.ms());
   }
   rep.total_ms = total.ms();

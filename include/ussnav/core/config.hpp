@@ -208,10 +208,10 @@ struct ObjectsConfig {
 };
 
 struct RegionsConfig {
-  double resolution = 0.02;          // Leiden CPM resolution (paper: 0.02)
+  double resolution = 0.1;          // Leiden CPM resolution (paper: 0.02)
   double beta = 0.01;                // Leiden refinement randomness
   int iterations = -1;               // Leiden iterations; -1 = until the partition is stable
-  int merge_shared_border_nodes = 4; // merge two adjacent regions sharing MORE border nodes
+  int merge_shared_border_nodes = 12; // merge two adjacent regions sharing MORE border nodes
   double border_edge_min_weight = 0.5;  // lighter (forced) edges never make a border node
   int min_region_nodes = 3;          // smaller regions join their most connected neighbour
   int seed = 1;                      // igraph RNG seed, reset before every Leiden call
