@@ -74,6 +74,7 @@ void runMap(const MapArgs& a) {
   const Stopwatch wall;
   int frames = 0;
   double t = 0;
+  std::vector<Vec3> flown{uav.pose().position};
   while (true) {
     SensedFrame f = sim.sense(uav.pose(), t);
     MapperFrame mf{f.pose, f.scan ? &*f.scan : nullptr, &f.depth, t};
@@ -89,6 +90,7 @@ void runMap(const MapArgs& a) {
     }
     if (uav.pathDone() || (a.max_frames > 0 && frames >= a.max_frames)) break;
     uav.step(sim.groundTruth(), dt);
+    flown.push_back(uav.pose().position);
     t += dt;
   }
   progressDone();
@@ -141,7 +143,7 @@ void runMap(const MapArgs& a) {
   stats["wall_s"] = wall.ms() / 1000.0;
 
   // Picture.
-  const TopDownView view = TopDownView::fit(world.bounds(), 30.0);
+  const TopDownView view = TopDownView::fit(world.bounds(), 40.0);
   Image img(view.width, view.height, {235, 235, 235});
   drawCoverageMask(img, view, mapper.coverage());
   drawWorldOutline(img, view, world);
@@ -158,9 +160,9 @@ void runMap(const MapArgs& a) {
     GraphDrawOptions go;
     drawConnectivityGraph(img, view, mapper.graph(), go);
   }
-  for (size_t i = 1; i < path.size(); ++i) {
-    const Vec2 p = view.toPx(path[i - 1]), q = view.toPx(path[i]);
-    img.line(p.x(), p.y(), q.x(), q.y(), {230, 60, 60}, 1);
+  for (size_t i = 1; i < flown.size(); ++i) {  // the trajectory actually flown
+    const Vec2 p = view.toPx(flown[i - 1]), q = view.toPx(flown[i]);
+    img.line(p.x(), p.y(), q.x(), q.y(), {230, 60, 60}, 2);
   }
   if (const ObjectLayer* objs = mapper.objects())
     for (const auto& o : objs->objects()) {
