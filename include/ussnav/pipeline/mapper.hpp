@@ -1,8 +1,9 @@
 #pragma once
 // The per-frame scene-graph pipeline (DESIGN.md data flow): rolling grid -> coverage mask ->
-// connectivity graph -> objects. It owns the modules and the order of calls; nothing else
-// does. Every stage's wall time goes into times() under its name (grid, coverage, skeleton,
-// perception, objects). The grid's change log of the last frame stays readable until the next
+// connectivity graph -> regions -> objects. It owns the modules and the order of calls; nothing
+// else does. Every stage's wall time goes into times() under its name (grid, coverage, skeleton,
+// regions, perception, objects); "regions" is sampled only on frames where the graph changed
+// (other frames skip the stage entirely). The grid's change log of the last frame stays readable until the next
 // process() call, so evaluation hooks can read what the frame changed.
 
 #include <memory>
@@ -14,6 +15,7 @@
 #include "ussnav/mapping/rolling_grid.hpp"
 #include "ussnav/objects/object_layer.hpp"
 #include "ussnav/perception/detector.hpp"
+#include "ussnav/regions/region_partitioner.hpp"
 #include "ussnav/skeleton/connectivity_graph.hpp"
 
 namespace ussnav {
@@ -21,6 +23,7 @@ namespace ussnav {
 struct MapperOptions {
   bool skeleton = true;  // grow the connectivity graph
   bool objects = true;   // run the detector and the object layer on depth frames
+  bool regions = true;   // partition the graph into regions (needs skeleton)
 };
 
 // One frame: the pose and whichever sensors fired. With a scan the scan feeds the grid (the
@@ -35,6 +38,8 @@ struct MapperFrame {
 struct MapperFrameReport {
   InsertStats insert;
   GraphUpdateStats graph;
+  RegionUpdate regions;      // all zero on frames where the graph did not change
+  bool regions_updated = false;
   IntegrateStats objects;
   double total_ms = 0.0;
 };
@@ -50,6 +55,7 @@ class Mapper {
   const RollingGrid& grid() const { return grid_; }
   const CoverageMask& coverage() const { return coverage_; }
   const ConnectivityGraph& graph() const { return graph_; }
+  const RegionPartitioner& regions() const { return regions_; }
   const ObjectLayer* objects() const { return objects_.get(); }
   const StageTimes& times() const { return times_; }
   int64_t frames() const { return frames_; }
@@ -62,6 +68,8 @@ class Mapper {
   RollingGrid grid_;
   CoverageMask coverage_;
   ConnectivityGraph graph_;
+  RegionPartitioner regions_;
+  size_t partitioned_nodes_ = 0, partitioned_edges_ = 0;  // graph size at the last region update
   std::unique_ptr<Detector> detector_;
   std::shared_ptr<const TextEncoder> encoder_;
   std::unique_ptr<ObjectLayer> objects_;
