@@ -26,7 +26,7 @@ struct StatsArgs {
 
 void runShow(const ShowArgs& a) {
   const SceneGraph g = loadSceneGraph(a.file);
-  const TopDownView view = TopDownView::fit(sceneBounds(g), a.px_per_m);
+  const TopDownView view = TopDownView::fit(sceneBounds(g), a.px_per_m, 40);
   Image img(view.width, view.height, {245, 245, 245});
   SceneDrawOptions opt;
   opt.coverage = a.coverage;

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <unistd.h>
 #include <nlohmann/json.hpp>
 
 #include "support/test_worlds.hpp"
@@ -38,10 +39,19 @@ SceneGraph handMade() {
   return g;
 }
 
+// One scratch folder per process, removed at exit.
+struct ScratchDir {
+  fs::path path = fs::temp_directory_path() / ("ussnav_sg_" + std::to_string(::getpid()));
+  ScratchDir() { fs::create_directories(path); }
+  ~ScratchDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
 fs::path tmpFile(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("ussnav_sg_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
+  static ScratchDir dir;
+  return dir.path / name;
 }
 
 // Writes `j` (or raw text) and expects loadSceneGraph to throw naming the file and `field`.
