@@ -32,10 +32,10 @@ void runShow(const ShowArgs& a) {
   opt.coverage = a.coverage;
   drawSceneGraph(img, view, g, opt);
   const SceneGraphCounts c = countLayers(g);
-  img.text(8, 8,
-           "scene graph: " + std::to_string(c.nodes) + " nodes, " + std::to_string(c.edges) + " edges, " +
-               std::to_string(c.regions) + " regions, " + std::to_string(c.objects) + " objects",
-           {0, 0, 0}, 2);
+  const std::string title = "scene graph: " + std::to_string(c.nodes) + " nodes, " + std::to_string(c.edges) +
+                            " edges, " + std::to_string(c.regions) + " regions, " + std::to_string(c.objects) +
+                            " objects";
+  img.text(8, 8, title, {0, 0, 0}, Image::textWidth(title, 2) + 16 <= view.width ? 2 : 1);
   writePng(a.out, img);
   std::printf("wrote %s (%d x %d px)\n", a.out.c_str(), view.width, view.height);
 }
