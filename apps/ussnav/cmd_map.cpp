@@ -1,6 +1,7 @@
 // `ussnav map`: fly a scripted trajectory in the simulator, run the scene-graph pipeline on
-// every frame, and write DIR/map.png and DIR/stats.json (grid, coverage, skeleton, per-stage
-// latency, and quality against ground truth).
+// every frame, and write DIR/map.png, DIR/scene_graph.json (docs/scene-graph-format.md) and
+// DIR/stats.json (grid, coverage, skeleton, regions, objects, per-stage latency, and quality
+// against ground truth).
 
 #include <cstdio>
 #include <filesystem>
@@ -12,10 +13,12 @@
 #include "ussnav/core/image.hpp"
 #include "ussnav/core/io.hpp"
 #include "ussnav/eval/map_quality.hpp"
+#include "ussnav/eval/scene_quality.hpp"
 #include "ussnav/mapping/map_drawing.hpp"
 #include "ussnav/perception/oracle_detector.hpp"
 #include "ussnav/pipeline/mapper.hpp"
-#include "ussnav/regions/partition_metrics.hpp"
+#include "ussnav/scene_graph/drawing.hpp"
+#include "ussnav/scene_graph/io.hpp"
 #include "ussnav/sim/simulator.hpp"
 #include "ussnav/sim/trajectory.hpp"
 #include "ussnav/sim/uav.hpp"
@@ -71,6 +74,7 @@ void runMap(const MapArgs& a) {
   const double dt = 1.0 / cfg.sim.frame_rate_hz;
   const double z = planner.flightZ();
   ObservedFreeSpace observed(cfg.mapping.grid.resolution, z - 0.25, z + 0.25);
+  SeenInstances seen(cfg.perception.min_pixels);  // GT instances the camera saw (evaluation only)
   const Stopwatch wall;
   int frames = 0;
   double t = 0;
@@ -80,6 +84,7 @@ void runMap(const MapArgs& a) {
     MapperFrame mf{f.pose, f.scan ? &*f.scan : nullptr, &f.depth, t};
     mapper.process(mf);
     observed.update(mapper.grid());
+    seen.add(f.depth);
     ++frames;
     if (frames % 20 == 0 || uav.pathDone()) {
       char line[200];
@@ -120,24 +125,27 @@ void runMap(const MapArgs& a) {
     sk["path_not_found"] = q.not_found;
     sk["path_colliding"] = q.colliding;
     stats["skeleton"] = sk;
-    // Regions against the rooms: every node whose centre lies in a room.
-    std::vector<int> pred, truth;
-    for (const auto& n : mapper.graph().nodes()) {
-      const Room* room = world.roomAt(n.center.head<2>());
-      const int r = mapper.regions().regionOf(n.id);
-      if (!room || r < 0) continue;
-      pred.push_back(r);
-      truth.push_back(room->id);
-    }
-    nlohmann::json rj = {{"count", mapper.regions().regions().size()}, {"nodes_evaluated", pred.size()}};
-    if (!pred.empty() && !world.rooms.empty()) {
-      rj["purity"] = purity(pred, truth);
-      rj["ari"] = adjustedRandIndex(pred, truth);
-    }
-    stats["regions"] = rj;
+  }
+  const SceneGraph sg = buildSceneGraph(mapper, t, a.world);
+  if (a.skeleton) {
+    const RegionQuality rq = regionQuality(sg, world);
+    stats["regions"] = {{"count", rq.count},           {"purity", rq.purity},
+                        {"ari", rq.ari},               {"nodes_scored", rq.nodes_scored},
+                        {"rooms_touched", rq.rooms_touched}};
   }
   if (const ObjectLayer* objs = mapper.objects()) {
-    stats["objects"] = {{"count", objs->objects().size()}, {"confirmed", objs->confirmedCount()}};
+    const std::unique_ptr<TextEncoder> encoder = makeTextEncoder(cfg.perception);
+    const ObjectQuality oq = objectQuality(sg.objects, world, seen.ids(), encoder.get());
+    stats["objects"] = {{"count", oq.count},
+                        {"all", objs->objects().size()},
+                        {"confirmed", objs->confirmedCount()},
+                        {"seen_instances", oq.seen_instances},
+                        {"matched_objects", oq.matched_objects},
+                        {"matched_instances", oq.matched_instances},
+                        {"duplicates", oq.duplicates},
+                        {"precision", oq.precision},
+                        {"recall", oq.recall},
+                        {"duplicate_rate", oq.duplicate_rate}};
   }
   stats["stage_ms"] = mapper.times().summary();
   stats["wall_s"] = wall.ms() / 1000.0;
@@ -146,17 +154,10 @@ void runMap(const MapArgs& a) {
   const TopDownView view = TopDownView::fit(world.bounds(), 40.0);
   Image img(view.width, view.height, {235, 235, 235});
   drawCoverageMask(img, view, mapper.coverage());
+  if (a.skeleton) drawRegions(img, view, sg);
   drawWorldOutline(img, view, world);
   drawGridSlice(img, view, mapper.grid(), z - 0.2, z + 0.2);
   if (a.skeleton) {
-    // Regions: the convex outline of each region's node centres, tinted.
-    for (const auto& [rid, region] : mapper.regions().regions()) {
-      std::vector<Vec2> pts;
-      for (int n : region.nodes) pts.push_back(view.toPx(mapper.graph().node(n).center));
-      if (pts.size() >= 3) img.fillPolygon(convexOutline2d(pts), paletteColor(rid), 0.25);
-      const Vec2 c = view.toPx(region.centroid);
-      img.text(int(c.x()) - 6, int(c.y()) - 4, "R" + std::to_string(rid), {60, 60, 60});
-    }
     GraphDrawOptions go;
     drawConnectivityGraph(img, view, mapper.graph(), go);
   }
@@ -177,6 +178,7 @@ void runMap(const MapArgs& a) {
 
   std::filesystem::create_directories(a.out);
   writePng(std::filesystem::path(a.out) / "map.png", img);
+  saveSceneGraph(std::filesystem::path(a.out) / "scene_graph.json", sg);
   writeJsonAtomic(std::filesystem::path(a.out) / "stats.json", stats);
 
   std::printf("frames %d, flown %.1f m, collisions %d, known voxels %zu, grid %.1f MB, GCM visited %zu cells (%.0f m^2, %.0f B/m^2)\n",
@@ -184,23 +186,27 @@ void runMap(const MapArgs& a) {
               mapper.grid().memoryBytes() / 1e6, mapper.coverage().visitedCount(), mapper.coverage().exploredArea(),
               mapper.coverage().bytesPerExploredSquareMetre());
   if (a.skeleton)
-  {
     std::printf("skeleton: %d nodes, free-space coverage %.3f, path success %.3f (%d pairs)\n",
                 stats["skeleton"]["nodes"].get<int>(), stats["skeleton"]["free_space_coverage"].get<double>(),
                 stats["skeleton"]["path_success"].get<double>(), stats["skeleton"]["path_pairs"].get<int>());
-    const auto& rj = stats["regions"];
-    if (rj.contains("purity"))
-      std::printf("regions: %d, purity %.3f, ARI %.3f against the world's rooms\n", rj["count"].get<int>(),
-                  rj["purity"].get<double>(), rj["ari"].get<double>());
-  }
+  if (a.skeleton)
+    std::printf("regions: %d, purity %.3f, ARI %.3f (%d nodes in rooms)\n", stats["regions"]["count"].get<int>(),
+                stats["regions"]["purity"].get<double>(), stats["regions"]["ari"].get<double>(),
+                stats["regions"]["nodes_scored"].get<int>());
+  if (stats.contains("objects"))
+    std::printf("objects: %d confirmed, precision %.3f, recall %.3f (%d seen instances), duplicate rate %.3f\n",
+                stats["objects"]["count"].get<int>(), stats["objects"]["precision"].get<double>(),
+                stats["objects"]["recall"].get<double>(), stats["objects"]["seen_instances"].get<int>(),
+                stats["objects"]["duplicate_rate"].get<double>());
   for (const auto& [stage, v] : stats["stage_ms"].items())
     std::printf("  %-10s median %7.2f ms  p95 %7.2f ms\n", stage.c_str(), v["median"].get<double>(), v["p95"].get<double>());
-  std::printf("wrote %s/map.png and %s/stats.json\n", a.out.c_str(), a.out.c_str());
+  std::printf("wrote %s/map.png, %s/scene_graph.json and %s/stats.json\n", a.out.c_str(), a.out.c_str(),
+              a.out.c_str());
 }
 
 void addMapCommand(CLI::App& root) {
   static MapArgs args;
-  auto* cmd = root.add_subcommand("map", "Fly a scripted trajectory and build the scene graph; write map.png and stats.json");
+  auto* cmd = root.add_subcommand("map", "Fly a scripted trajectory and build the scene graph; write map.png, scene_graph.json and stats.json");
   cmd->fallthrough();
   cmd->add_option("--world", args.world, "world JSON (ussnav world generate/import)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--trajectory", args.trajectory, "lawnmower | spiral | CSV file with x,y,z rows")->capture_default_str();

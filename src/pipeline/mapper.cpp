@@ -1,5 +1,7 @@
 #include "ussnav/pipeline/mapper.hpp"
 
+#include <numeric>
+
 namespace ussnav {
 
 Mapper::Mapper(const Config& cfg, MapperOptions opt, std::unique_ptr<Detector> detector)
@@ -8,8 +10,8 @@ Mapper::Mapper(const Config& cfg, MapperOptions opt, std::unique_ptr<Detector> d
       grid_(cfg.mapping.grid),
       coverage_(cfg.mapping.coverage, cfg.mapping.grid.resolution),
       graph_(cfg.skeleton),
-      detector_(std::move(detector)),
-      regions_(cfg.regions) {
+      regions_(cfg.regions),
+      detector_(std::move(detector)) {
   if (opt_.objects && detector_) {
     encoder_ = std::shared_ptr<const TextEncoder>(makeTextEncoder(cfg.perception));
     objects_ = std::make_unique<ObjectLayer>(cfg.objects, encoder_);
@@ -46,16 +48,18 @@ MapperFrameReport Mapper::process(const MapperFrame& f) {
     rep.graph = graph_.update(grid_, f.pose.position, f.time);
     times_.add("skeleton", sw.ms());
   }
+  // Nodes and edges are only ever appended, so a size change is exactly "the graph changed",
+  // and the new node ids are the tail [partitioned_nodes_, size).
   if (opt_.skeleton && opt_.regions &&
       (graph_.size() != partitioned_nodes_ || graph_.edges().size() != partitioned_edges_)) {
-    // Regions only when the graph changed: new nodes plus their neighbourhood are re-partitioned.
     const Stopwatch sw;
     const WeightedGraphView view = makeGraphView(
-        graph_.nodes(), [](const ScgNode& n) { return std::make_pair(n.id, n.center); }, graph_.edges(),
-        [](const ScgEdge& e) { return std::make_tuple(e.a, e.b, e.weight); });
-    std::vector<int> fresh;
-    for (size_t id = partitioned_nodes_; id < graph_.size(); ++id) fresh.push_back(int(id));
-    rep.regions = regions_.update(view, fresh);
+        graph_.nodes(), [](const ScgNode& n) { return std::pair<int, Vec3>(n.id, n.center); }, graph_.edges(),
+        [](const ScgEdge& e) { return std::tuple<int, int, double>(e.a, e.b, e.weight); });
+    std::vector<int> added(graph_.size() - partitioned_nodes_);
+    std::iota(added.begin(), added.end(), int(partitioned_nodes_));
+    rep.regions = regions_.update(view, added);
+    rep.regions_updated = true;
     partitioned_nodes_ = graph_.size();
     partitioned_edges_ = graph_.edges().size();
     if (objects_) objects_->setRegionOf([this](int node) { return regions_.regionOf(node); });
@@ -67,7 +71,8 @@ MapperFrameReport Mapper::process(const MapperFrame& f) {
     times_.add("perception", sw.ms());
     const Stopwatch sw2;
     const int node = anchorNode(f.pose.position);
-    rep.objects = objects_->integrate(dets, *f.depth, node, node >= 0 ? regions_.regionOf(node) : -1, f.time);
+    const int region = node >= 0 ? regions_.regionOf(node) : -1;
+    rep.objects = objects_->integrate(dets, *f.depth, node, region, f.time);
     times_.add("objects", sw2.ms());
   }
   rep.total_ms = total.ms();

@@ -1,8 +1,9 @@
 #pragma once
 // The per-frame scene-graph pipeline (DESIGN.md data flow): rolling grid -> coverage mask ->
-// connectivity graph -> regions -> objects. It owns the modules and the order of calls; nothing else
-// does. Every stage's wall time goes into times() under its name (grid, coverage, skeleton,
-// regions, perception, objects). The grid's change log of the last frame stays readable until the next
+// connectivity graph -> regions -> objects. It owns the modules and the order of calls; nothing
+// else does. Every stage's wall time goes into times() under its name (grid, coverage, skeleton,
+// regions, perception, objects); "regions" is sampled only on frames where the graph changed
+// (other frames skip the stage entirely). The grid's change log of the last frame stays readable until the next
 // process() call, so evaluation hooks can read what the frame changed.
 
 #include <memory>
@@ -37,8 +38,9 @@ struct MapperFrame {
 struct MapperFrameReport {
   InsertStats insert;
   GraphUpdateStats graph;
+  RegionUpdate regions;      // all zero on frames where the graph did not change
+  bool regions_updated = false;
   IntegrateStats objects;
-  RegionUpdate regions;
   double total_ms = 0.0;
 };
 
@@ -53,8 +55,8 @@ class Mapper {
   const RollingGrid& grid() const { return grid_; }
   const CoverageMask& coverage() const { return coverage_; }
   const ConnectivityGraph& graph() const { return graph_; }
-  const ObjectLayer* objects() const { return objects_.get(); }
   const RegionPartitioner& regions() const { return regions_; }
+  const ObjectLayer* objects() const { return objects_.get(); }
   const StageTimes& times() const { return times_; }
   int64_t frames() const { return frames_; }
   // Graph node the UAV is in (or nearest to), -1 before the first node exists.
@@ -66,11 +68,11 @@ class Mapper {
   RollingGrid grid_;
   CoverageMask coverage_;
   ConnectivityGraph graph_;
+  RegionPartitioner regions_;
+  size_t partitioned_nodes_ = 0, partitioned_edges_ = 0;  // graph size at the last region update
   std::unique_ptr<Detector> detector_;
   std::shared_ptr<const TextEncoder> encoder_;
   std::unique_ptr<ObjectLayer> objects_;
-  RegionPartitioner regions_;
-  size_t partitioned_nodes_ = 0, partitioned_edges_ = 0;
   StageTimes times_;
   int64_t frames_ = 0;
 };

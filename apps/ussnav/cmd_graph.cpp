@@ -1,0 +1,95 @@
+// `ussnav graph show|stats`: read a saved scene graph (DIR/scene_graph.json from `ussnav map`)
+// and draw it or count its layers. Works on the document alone, no world or simulator.
+
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "command.hpp"
+#include "ussnav/core/image.hpp"
+#include "ussnav/scene_graph/drawing.hpp"
+#include "ussnav/scene_graph/io.hpp"
+
+namespace ussnav::cli {
+namespace {
+
+struct ShowArgs {
+  std::string file, out;
+  double px_per_m = 30.0;
+  bool coverage = false;
+};
+
+struct StatsArgs {
+  std::string file;
+  bool json = false;
+};
+
+void runShow(const ShowArgs& a) {
+  const SceneGraph g = loadSceneGraph(a.file);
+  const TopDownView view = TopDownView::fit(sceneBounds(g), a.px_per_m, 40);
+  Image img(view.width, view.height, {245, 245, 245});
+  SceneDrawOptions opt;
+  opt.coverage = a.coverage;
+  drawSceneGraph(img, view, g, opt);
+  const SceneGraphCounts c = countLayers(g);
+  const std::string title = "scene graph: " + std::to_string(c.nodes) + " nodes, " + std::to_string(c.edges) +
+                            " edges, " + std::to_string(c.regions) + " regions, " + std::to_string(c.objects) +
+                            " objects";
+  img.text(8, 8, title, {0, 0, 0}, Image::textWidth(title, 2) + 16 <= view.width ? 2 : 1);
+  writePng(a.out, img);
+  std::printf("wrote %s (%d x %d px)\n", a.out.c_str(), view.width, view.height);
+}
+
+void runStats(const StatsArgs& a) {
+  const SceneGraph g = loadSceneGraph(a.file);
+  const SceneGraphCounts c = countLayers(g);
+  nlohmann::json j;
+  j["file"] = a.file;
+  j["source"] = g.source;
+  j["time_s"] = g.time;
+  j["nodes"] = c.nodes;
+  j["edges"] = c.edges;
+  j["edges_by_type"] = nlohmann::json::object();
+  for (const auto& [t, n] : c.edges_by_type) j["edges_by_type"][t] = n;
+  j["regions"] = c.regions;
+  j["labelled_regions"] = c.labelled_regions;
+  j["objects"] = c.objects;
+  j["objects_by_label"] = nlohmann::json::object();
+  for (const auto& [l, n] : c.objects_by_label) j["objects_by_label"][l] = n;
+  j["coverage"] = {{"visited_cells", g.coverage.visited_cells}, {"explored_area_m2", g.coverage.explored_area_m2}};
+  if (a.json) {
+    std::cout << j.dump(2) << "\n";
+    return;
+  }
+  std::printf("%s (%s, t=%.1f s)\n", a.file.c_str(), g.source.c_str(), g.time);
+  std::printf("  nodes    %d\n  edges    %d (", c.nodes, c.edges);
+  for (size_t i = 0; i < c.edges_by_type.size(); ++i)
+    std::printf("%s%s %d", i ? ", " : "", c.edges_by_type[i].first.c_str(), c.edges_by_type[i].second);
+  std::printf(")\n  regions  %d (%d labelled)\n  objects  %d\n", c.regions, c.labelled_regions, c.objects);
+  for (const auto& [l, n] : c.objects_by_label) std::printf("    %-20s %d\n", l.c_str(), n);
+  std::printf("  coverage %lld visited cells, %.1f m^2 explored\n", (long long)g.coverage.visited_cells,
+              g.coverage.explored_area_m2);
+}
+
+void addGraphCommands(CLI::App& root) {
+  auto* graph = subcommandGroup(root, "graph", "Inspect and draw saved scene graphs (scene_graph.json)");
+  static ShowArgs show;
+  auto* s = graph->add_subcommand("show", "Draw a saved scene graph top-down: regions, nodes, edges by type, objects");
+  s->fallthrough();
+  s->add_option("file", show.file, "scene_graph.json")->required()->check(CLI::ExistingFile);
+  s->add_option("--out,-o", show.out, "PNG to write")->required();
+  s->add_option("--px-per-m", show.px_per_m, "scale, pixels per metre")->capture_default_str()->check(CLI::Range(2.0, 200.0));
+  s->add_flag("--coverage", show.coverage, "also shade the visited coverage cells");
+  s->callback([] { runShow(show); });
+
+  static StatsArgs st;
+  auto* t = graph->add_subcommand("stats", "Counts per layer: nodes, edges by type, regions, objects by label, coverage");
+  t->fallthrough();
+  t->add_option("file", st.file, "scene_graph.json")->required()->check(CLI::ExistingFile);
+  t->add_flag("--json", st.json, "one JSON object on stdout");
+  t->callback([] { runStats(st); });
+}
+
+}  // namespace
+USSNAV_COMMAND(30, addGraphCommands);
+}  // namespace ussnav::cli
