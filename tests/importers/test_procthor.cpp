@@ -32,12 +32,12 @@ bool roomsConnectedByDoors(const World& w) {
       adj[d.room_b].insert(d.room_a);
     }
   std::set<int> seen{w.rooms.front().id};
-  std::vector<int> todo{w.rooms.front().id};
-  while (!todo.empty()) {
-    const int r = todo.back();
-    todo.pop_back();
+  std::vector<int> pending{w.rooms.front().id};
+  while (!pending.empty()) {
+    const int r = pending.back();
+    pending.pop_back();
     for (int n : adj[r])
-      if (seen.insert(n).second) todo.push_back(n);
+      if (seen.insert(n).second) pending.push_back(n);
   }
   return seen.size() == w.rooms.size();
 }

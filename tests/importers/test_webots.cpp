@@ -85,12 +85,12 @@ TEST_F(WebotsApartment, DoorsJoinNeighboursAndConnectEveryRoom) {
   for (const auto& wl : world_.walls) with_opening += int(wl.openings.size());
   EXPECT_EQ(with_opening, 6);  // 7 Door nodes, the one to the outside stays shut
   std::set<int> seen{1};
-  std::vector<int> todo{1};
-  while (!todo.empty()) {
-    const int r = todo.back();
-    todo.pop_back();
+  std::vector<int> pending{1};
+  while (!pending.empty()) {
+    const int r = pending.back();
+    pending.pop_back();
     for (int n : adj[r])
-      if (seen.insert(n).second) todo.push_back(n);
+      if (seen.insert(n).second) pending.push_back(n);
   }
   EXPECT_EQ(seen.size(), world_.rooms.size());
   // The living room opens onto the corridor without a door node (no wall between x -6.8..-4.5).

@@ -96,10 +96,10 @@ size_t walkNodes(const std::string& b, const OctreeHeader& h, const std::string&
       throw InputError(file, "data", "file ends inside the octree data (truncated after " + std::to_string(b.size()) + " bytes)");
   };
   // Explicit stack of (depth) for nodes whose record is still to be read, in file order.
-  std::vector<int> todo{0};
-  while (!todo.empty()) {
-    const int depth = todo.back();
-    todo.pop_back();
+  std::vector<int> pending{0};
+  while (!pending.empty()) {
+    const int depth = pending.back();
+    pending.pop_back();
     if (depth > 16) throw InputError(file, "data", "octree deeper than 16 levels (corrupt data)");
     std::vector<int> kids;
     if (h.binary) {
@@ -122,7 +122,7 @@ size_t walkNodes(const std::string& b, const OctreeHeader& h, const std::string&
         }
     }
     // Children are read in order 0..7, so push them reversed.
-    for (auto it = kids.rbegin(); it != kids.rend(); ++it) todo.push_back(*it);
+    for (auto it = kids.rbegin(); it != kids.rend(); ++it) pending.push_back(*it);
     if (nodes > h.size + 1) throw InputError(file, "data", "more nodes than the header's size " + std::to_string(h.size));
   }
   if (nodes != h.size)

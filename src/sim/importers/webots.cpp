@@ -175,12 +175,12 @@ void separateOverlaps(std::vector<Rect>& rs, ImportReport& rep) {
 
 // Cuts a patch in two where a chain of tall walls/doors crosses it completely (a patch that
 // spans two walled-off spaces). The larger part keeps the name; the other gets a compass suffix.
-std::vector<Rect> splitByCrossingWalls(std::vector<Rect> todo, const std::vector<Seg>& segs, ImportReport& rep) {
+std::vector<Rect> splitByCrossingWalls(std::vector<Rect> pending, const std::vector<Seg>& segs, ImportReport& rep) {
   std::vector<Rect> done;
   const double step = 0.05, grow = 0.2, margin = 0.5;
-  while (!todo.empty()) {
-    Rect r = todo.back();
-    todo.pop_back();
+  while (!pending.empty()) {
+    Rect r = pending.back();
+    pending.pop_back();
     bool cut = false;
     for (const auto& s : segs) {
       if (!s.tall()) continue;
@@ -201,8 +201,8 @@ std::vector<Rect> splitByCrossingWalls(std::vector<Rect> todo, const std::vector
       small.name = r.name + (along_x ? (p_big ? "_N" : "_S") : (p_big ? "_E" : "_W"));
       small.split_part = true;
       rep.notes.push_back(r.name + " is crossed by wall '" + s.name + "'; split off " + small.name);
-      todo.push_back(p);
-      todo.push_back(q);
+      pending.push_back(p);
+      pending.push_back(q);
       cut = true;
       break;
     }
