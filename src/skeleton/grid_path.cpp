@@ -162,9 +162,9 @@ std::optional<std::vector<Vec3>> gridPath(const OccupancyMap& map, const Vec3& a
   auto& closed = sc.closed;
   using Item = std::pair<float, size_t>;  // f, index; ties broken by index: deterministic
   std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
-  // Path length is measured between voxel centres plus the two end stubs.
-  const double stub = (a - cellCenter(ka)).norm() + (b - cellCenter(kb)).norm();
-  const float budget = float(max_length - stub) + 1e-5f;
+  // Path length is measured between voxel centres, plus the offsets of a and b from theirs.
+  const double end_offsets = (a - cellCenter(ka)).norm() + (b - cellCenter(kb)).norm();
+  const float budget = float(max_length - end_offsets) + 1e-5f;
   touch(origin);
   g[origin] = 0.f;
   {

@@ -14,12 +14,6 @@ using namespace ussnav::test;
 
 namespace {
 
-Aabb box(const Vec3& lo, const Vec3& hi) {
-  Aabb b;
-  b.min = lo;
-  b.max = hi;
-  return b;
-}
 
 // Updates with the UAV held at `uav` until a frame adds nothing.
 int growUntilStable(ConnectivityGraph& g, const OccupancyMap& map, const Vec3& uav, double t0 = 0.0,
@@ -262,7 +256,7 @@ TEST(ConnectivityGraph, RevealingSpaceAddsNodesAndKeepsOldOnes) {
   // Room B and the door are unobserved at first.
   const TwoRoomsScene truth = twoRoomsGrid();
   TwoRoomsScene scene = twoRoomsGrid();
-  scene.grid.hide(box(Vec3(scene.wall_min_x, -1, -1), Vec3(9, 5, 3)));
+  scene.grid.hide(Aabb::of(Vec3(scene.wall_min_x, -1, -1), Vec3(9, 5, 3)));
   ConnectivityGraph g;
   growUntilStable(g, scene.grid, Vec3(1.0, 1.0, 1.2), 0.0);
   const std::vector<ScgNode> before = g.nodes();
@@ -308,7 +302,7 @@ TEST(ConnectivityGraph, NodesOutliveTheRollingWindow) {
   double t = 0;
   for (const Vec3& p : tour) {
     observe(truth.grid, known, p, 5.0, 3000);
-    known.setWindow(box(p - Vec3(4, 4, 2), p + Vec3(4, 4, 2)));
+    known.setWindow(Aabb::of(p - Vec3(4, 4, 2), p + Vec3(4, 4, 2)));
     g.update(known, p, t += 0.4);
   }
   // The first room's nodes are outside the final window but still there and still linked.

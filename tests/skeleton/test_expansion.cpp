@@ -11,12 +11,6 @@ using namespace ussnav;
 using namespace ussnav::test;
 
 namespace {
-Aabb box(const Vec3& lo, const Vec3& hi) {
-  Aabb b;
-  b.min = lo;
-  b.max = hi;
-  return b;
-}
 BoundarySurface handSurface(const Vec3& nexus, const Vec3& normal) {
   BoundarySurface s;
   s.nexus = nexus;
@@ -64,7 +58,7 @@ TEST(ExpandNewPolyhedron, BoxRoomVerticesAreFreeOrOnSurfaces) {
 
 TEST(ExpandNewPolyhedron, UnknownSpaceIsContactOnlyWhenConfigured) {
   BoxRoomScene scene = boxRoomGrid(Vec3(4.0, 4.0, 2.6));
-  scene.grid.hide(box(Vec3(2.6, 0, 0), Vec3(4.0, 4.0, 2.6)));  // x > 2.6 not observed yet
+  scene.grid.hide(Aabb::of(Vec3(2.6, 0, 0), Vec3(4.0, 4.0, 2.6)));  // x > 2.6 not observed yet
   SkeletonConfig cfg;
   const Vec3 seed(2.0, 2.0, 1.2);
   const auto dirs = fibonacciSphere(cfg.sphere_samples);
@@ -84,7 +78,7 @@ TEST(ExpandNewPolyhedron, UnknownSpaceIsContactOnlyWhenConfigured) {
   EXPECT_NEAR(through.bounds.max.x(), 2.0 + cfg.max_radius, 0.1);
 
   // ... but never beyond the edge of the map window.
-  scene.grid.setWindow(box(Vec3(-1, -1, -1), Vec3(2.5, 5, 4)));
+  scene.grid.setWindow(Aabb::of(Vec3(-1, -1, -1), Vec3(2.5, 5, 4)));
   const Polyhedron clipped = expandNewPolyhedron(scene.grid, seed, dirs, cfg);
   EXPECT_LE(clipped.bounds.max.x(), 2.5 + 1e-9);
   int clipped_unknown = 0;
@@ -117,17 +111,17 @@ TEST(FindNewExpandSeed, RejectsUnsafeAndDefersUnknown) {
   d = findNewExpandSeed(handSurface(Vec3(1.0, 0.2, 1.2), -Vec3::UnitY()), scene.grid, empty, cfg);
   EXPECT_EQ(d.status, SeedStatus::Unsafe);
   // Unknown space 0.3 m ahead: the seed would touch it; wait for it to be observed.
-  scene.grid.hide(box(Vec3(1.3, 0, 0), Vec3(10, 1.2, 2.4)));
+  scene.grid.hide(Aabb::of(Vec3(1.3, 0, 0), Vec3(10, 1.2, 2.4)));
   d = findNewExpandSeed(handSurface(Vec3(1.0, 0.6, 1.2), Vec3::UnitX()), scene.grid, empty, cfg);
   ASSERT_EQ(d.status, SeedStatus::Deferred);
   EXPECT_EQ(scene.grid.state(d.probe), VoxelState::Unknown);
   EXPECT_NEAR(scene.grid.centerOf(d.probe).x(), 1.35, 1e-9);
   // Once observed, the same surface gives a seed.
-  scene.grid.carve(box(Vec3(1.3, 0, 0), Vec3(10, 1.2, 2.4)));
+  scene.grid.carve(Aabb::of(Vec3(1.3, 0, 0), Vec3(10, 1.2, 2.4)));
   EXPECT_EQ(findNewExpandSeed(handSurface(Vec3(1.0, 0.6, 1.2), Vec3::UnitX()), scene.grid, empty, cfg).status,
             SeedStatus::Accepted);
   // Outside the window: deferred too.
-  scene.grid.setWindow(box(Vec3(-1, -1, -1), Vec3(1.5, 2, 3)));
+  scene.grid.setWindow(Aabb::of(Vec3(-1, -1, -1), Vec3(1.5, 2, 3)));
   d = findNewExpandSeed(handSurface(Vec3(1.0, 0.6, 1.2), Vec3::UnitX()), scene.grid, empty, cfg);
   EXPECT_EQ(d.status, SeedStatus::Deferred);
   EXPECT_FALSE(scene.grid.inWindow(d.probe));
@@ -154,7 +148,7 @@ TEST(FindNewExpandSeed, DropsSeedsInCoveredSpace) {
 
 TEST(FindUnsafeVoxel, ReportsObstacleBeforeUnknown) {
   CorridorScene scene = corridorGrid(10.0, 1.2, 2.4);
-  scene.grid.hide(box(Vec3(2.1, 0, 0), Vec3(3, 1.2, 2.4)));
+  scene.grid.hide(Aabb::of(Vec3(2.1, 0, 0), Vec3(3, 1.2, 2.4)));
   Vec3i k;
   VoxelState s;
   EXPECT_FALSE(findUnsafeVoxel(scene.grid, Vec3(1.0, 0.6, 1.2), 0.25, true, &k, &s));
@@ -177,7 +171,7 @@ TEST(CastRayThroughGaps, PassesSensorHolesButNotUnexploredSpace) {
   EXPECT_EQ(h.hit_state, VoxelState::Unknown);
   EXPECT_NEAR(h.point.x(), 2.0, 1e-9);
   // Three unknown voxels in a row (0.3 m) are unexplored space: stop where they begin.
-  scene.grid.hide(box(Vec3(3.0, 0, 0), Vec3(3.3, 1.2, 2.4)));
+  scene.grid.hide(Aabb::of(Vec3(3.0, 0, 0), Vec3(3.3, 1.2, 2.4)));
   h = castRayThroughGaps(scene.grid, a, b, true, 0.2);
   ASSERT_TRUE(h.blocked);
   EXPECT_NEAR(h.point.x(), 3.0, 1e-9);
@@ -191,7 +185,7 @@ TEST(CastRayThroughGaps, PassesSensorHolesButNotUnexploredSpace) {
   ASSERT_TRUE(h.blocked);
   EXPECT_EQ(h.hit_state, VoxelState::Occupied);
   EXPECT_NEAR(h.point.x(), 10.0, 1e-9);
-  scene.grid.setWindow(box(Vec3(-1, -1, -1), Vec3(4.5, 2, 3)));
+  scene.grid.setWindow(Aabb::of(Vec3(-1, -1, -1), Vec3(4.5, 2, 3)));
   h = castRayThroughGaps(scene.grid, a, b, false, 0.0);
   ASSERT_TRUE(h.blocked);
   EXPECT_EQ(h.hit_state, VoxelState::Unknown);

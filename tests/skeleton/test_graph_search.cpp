@@ -13,12 +13,6 @@ using namespace ussnav::test;
 
 namespace {
 
-Aabb box(const Vec3& lo, const Vec3& hi) {
-  Aabb b;
-  b.min = lo;
-  b.max = hi;
-  return b;
-}
 
 void grow(ConnectivityGraph& g, const OccupancyMap& map, const Vec3& uav) {
   for (int f = 0; f < 50; ++f)
@@ -102,7 +96,7 @@ TEST(GraphSearch, AvoidsEdgesThatTheCurrentMapBlocks) {
   ASSERT_TRUE(findGraphPath(g, scene.grid, start, goal).found);
   // Something now closes the corridor in the middle: the graph still has its edges there, but
   // the search re-checks them against the current map.
-  scene.grid.wall(box(Vec3(4.9, 0, 0), Vec3(5.1, 1.2, 2.4)));
+  scene.grid.wall(Aabb::of(Vec3(4.9, 0, 0), Vec3(5.1, 1.2, 2.4)));
   EXPECT_FALSE(findGraphPath(g, scene.grid, start, goal).found);
   // A path on one side is unaffected.
   const GraphPath near = findGraphPath(g, scene.grid, start, Vec3(4.5, 0.3, 0.5));
@@ -112,9 +106,9 @@ TEST(GraphSearch, AvoidsEdgesThatTheCurrentMapBlocks) {
 
 TEST(GraphSearch, ShortcutsAroundAnL) {
   // An L-shaped pair of corridors: the path turns once and stays clear.
-  DenseGrid grid(box(Vec3(-0.2, -0.2, -0.2), Vec3(6.2, 6.2, 2.6)), 0.1, VoxelState::Occupied);
-  grid.carve(box(Vec3(0, 0, 0), Vec3(6.0, 1.4, 2.4)));
-  grid.carve(box(Vec3(4.6, 0, 0), Vec3(6.0, 6.0, 2.4)));
+  DenseGrid grid(Aabb::of(Vec3(-0.2, -0.2, -0.2), Vec3(6.2, 6.2, 2.6)), 0.1, VoxelState::Occupied);
+  grid.carve(Aabb::of(Vec3(0, 0, 0), Vec3(6.0, 1.4, 2.4)));
+  grid.carve(Aabb::of(Vec3(4.6, 0, 0), Vec3(6.0, 6.0, 2.4)));
   ConnectivityGraph g;
   grow(g, grid, Vec3(0.7, 0.7, 1.2));
   const GraphPath path = findGraphPath(g, grid, Vec3(0.5, 0.7, 1.2), Vec3(5.3, 5.5, 1.2));
@@ -146,17 +140,17 @@ TEST(GridPath, FindsShortPathsAroundWallsOnly) {
 
 TEST(GridPath, CoarseCellsSkipSlitsTooNarrowToFly) {
   // A wall with a 0.2 m slit: passable voxel by voxel, not on 0.2 m cells.
-  DenseGrid grid(box(Vec3(-0.2, -0.2, -0.2), Vec3(4.2, 3.2, 2.6)), 0.1, VoxelState::Occupied);
-  grid.carve(box(Vec3(0, 0, 0), Vec3(4.0, 3.0, 2.4)));
-  grid.wall(box(Vec3(1.9, 0, 0), Vec3(2.1, 3.0, 2.4)));
-  grid.carve(box(Vec3(1.9, 1.3, 0.8), Vec3(2.1, 1.5, 1.6)));  // voxels 13-14: no 2-cell fits
+  DenseGrid grid(Aabb::of(Vec3(-0.2, -0.2, -0.2), Vec3(4.2, 3.2, 2.6)), 0.1, VoxelState::Occupied);
+  grid.carve(Aabb::of(Vec3(0, 0, 0), Vec3(4.0, 3.0, 2.4)));
+  grid.wall(Aabb::of(Vec3(1.9, 0, 0), Vec3(2.1, 3.0, 2.4)));
+  grid.carve(Aabb::of(Vec3(1.9, 1.3, 0.8), Vec3(2.1, 1.5, 1.6)));  // voxels 13-14: no 2-cell fits
   const Vec3 a(1.5, 1.4, 1.2), b(2.5, 1.4, 1.2);
   const auto fine = gridPath(grid, a, b, 2.0, true, 1);
   ASSERT_TRUE(fine.has_value());
   EXPECT_TRUE(polylineClear(grid, *fine, true));
   EXPECT_FALSE(gridPath(grid, a, b, 2.0, true, 2).has_value());
   // Widen it to 0.6 m: coarse cells pass too, and the result is clear voxel by voxel.
-  grid.carve(box(Vec3(1.9, 1.2, 0.8), Vec3(2.1, 1.8, 1.6)));
+  grid.carve(Aabb::of(Vec3(1.9, 1.2, 0.8), Vec3(2.1, 1.8, 1.6)));
   const auto coarse = gridPath(grid, a, b, 2.0, true, 2);
   ASSERT_TRUE(coarse.has_value());
   EXPECT_TRUE(polylineClear(grid, *coarse, true));

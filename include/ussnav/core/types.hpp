@@ -33,6 +33,12 @@ struct Pose {
 struct Aabb {
   Vec3 min = Vec3::Constant(std::numeric_limits<double>::infinity());
   Vec3 max = Vec3::Constant(-std::numeric_limits<double>::infinity());
+  static Aabb of(const Vec3& lo, const Vec3& hi) {
+    Aabb b;
+    b.min = lo;
+    b.max = hi;
+    return b;
+  }
   bool empty() const { return (min.array() > max.array()).any(); }
   void extend(const Vec3& p) { min = min.cwiseMin(p); max = max.cwiseMax(p); }
   void extend(const Aabb& b) { if (!b.empty()) { extend(b.min); extend(b.max); } }
