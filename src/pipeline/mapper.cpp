@@ -34,8 +34,10 @@ MapperFrameReport Mapper::process(const MapperFrame& f) {
     grid_.moveTo(f.pose.position);
     if (f.scan)
       rep.insert = grid_.insertScan(*f.scan);
-    else if (f.depth)
-      rep.insert = grid_.insertDepth(*f.depth);
+    if (f.depth && (!f.scan || opt_.fuse_depth)) {
+      const InsertStats d = grid_.insertDepth(*f.depth);
+      if (!f.scan) rep.insert = d;
+    }
     times_.add("grid", sw.ms());
   }
   {

@@ -13,6 +13,12 @@ void Uav::setPath(const std::vector<Vec3>& path) {
   while (next_ < path_.size() && (path_[next_] - pose_.position).norm() < 1e-6) ++next_;
 }
 
+std::vector<Vec3> Uav::remainingPath() const {
+  std::vector<Vec3> out{pose_.position};
+  for (size_t i = next_; i < path_.size(); ++i) out.push_back(path_[i]);
+  return out;
+}
+
 bool Uav::idle() const {
   if (!pathDone()) return false;
   return !has_yaw_target_ || std::abs(wrapAngle(yaw_target_ - pose_.yaw)) < 1e-3;

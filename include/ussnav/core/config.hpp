@@ -247,6 +247,16 @@ struct ExplorationConfig {
   double yaw_step_deg = 5.0;        // yaws tried per viewpoint
   int min_viewpoint_gain = 10;      // viewpoints seeing fewer frontier cells are dropped
   int max_viewpoints = 10;          // best viewpoints kept per frontier
+  // What the camera has seen (CameraCoverage): a 2-D map of known free space at flight height
+  // and of the cells the depth camera has looked at; known-but-unseen patches become targets.
+  double seen_resolution = 0.25;    // cell size of that map, m
+  double seen_range = 4.0;          // a camera ray marks cells up to this range, m (objects are
+                                    // detected up to perception.max_range)
+  int seen_pixel_stride = 4;        // every n-th depth pixel column / row is walked
+  int unseen_min_cells = 6;         // smaller unseen patches are no target
+  double unseen_patch_size = 3.0;   // unseen patches are cut into tiles of this size, m
+  double unseen_view_distance = 1.5;// viewpoints this far (and half, and 1.5x) from a patch, m
+  double unseen_clearance = 0.35;   // viewpoints need known free cells within this, m
   template <class V> void visit(V& v) {
     v.field("band_z_min", band_z_min, -100.0, 100.0, "m");
     v.field("band_z_max", band_z_max, -100.0, 100.0, "m");
@@ -264,6 +274,45 @@ struct ExplorationConfig {
     v.field("yaw_step_deg", yaw_step_deg, 0.5, 90.0, "degrees");
     v.field("min_viewpoint_gain", min_viewpoint_gain, 0, 1000000, "cells");
     v.field("max_viewpoints", max_viewpoints, 1, 10000, "viewpoints");
+    v.field("seen_resolution", seen_resolution, 0.05, 2.0, "m");
+    v.field("seen_range", seen_range, 0.2, 50.0, "m");
+    v.field("seen_pixel_stride", seen_pixel_stride, 1, 64, "pixels");
+    v.field("unseen_min_cells", unseen_min_cells, 1, 100000, "cells");
+    v.field("unseen_patch_size", unseen_patch_size, 0.5, 50.0, "m");
+    v.field("unseen_view_distance", unseen_view_distance, 0.3, 20.0, "m");
+    v.field("unseen_clearance", unseen_clearance, 0.0, 2.0, "m");
+  }
+};
+
+// The flight loop of an exploration / ObjectNav episode (ussnav explore, ussnav eval).
+struct EpisodeConfig {
+  double max_time_s = 600.0;          // budget: simulated seconds
+  double max_distance_m = 0.0;        // budget: metres flown (0 = none)
+  double replan_period_s = 1.0;       // re-plan at least this often while flying to a viewpoint
+  double goal_tolerance = 0.3;        // a viewpoint is reached within this, m
+  double found_radius = 1.0;          // success: within this of the target's box, m (DESIGN.md)
+  double found_margin = 0.15;         // approach poses aim this much inside found_radius, m
+  int target_min_observations = 3;    // an object counts as found after this many observations
+  double goal_similarity = 0.85;      // object label matches the goal at this text cosine
+  double blacklist_s = 20.0;          // an unreachable target is skipped for this long, s
+  double yaw_weight = 1.0;            // cost = max(path / speed, yaw_weight * yaw / yaw rate)
+  double clearance = 0.4;             // flight paths keep this from mapped obstacles, m
+  bool fuse_depth = true;             // the depth camera feeds the grid too (LiDAR blind cone)
+  bool end_on_collision = true;       // a collision ends the episode as a failure (DESIGN.md)
+  template <class V> void visit(V& v) {
+    v.field("max_time_s", max_time_s, 1.0, 1e6, "s");
+    v.field("max_distance_m", max_distance_m, 0.0, 1e6, "m");
+    v.field("replan_period_s", replan_period_s, 0.05, 100.0, "s");
+    v.field("goal_tolerance", goal_tolerance, 0.01, 5.0, "m");
+    v.field("found_radius", found_radius, 0.1, 10.0, "m");
+    v.field("found_margin", found_margin, 0.0, 1.0, "m");
+    v.field("target_min_observations", target_min_observations, 1, 1000, "observations");
+    v.field("goal_similarity", goal_similarity, 0.0, 1.0, "cosine");
+    v.field("blacklist_s", blacklist_s, 0.0, 1e4, "s");
+    v.field("yaw_weight", yaw_weight, 0.0, 100.0, "");
+    v.field("clearance", clearance, 0.0, 5.0, "m");
+    v.field("fuse_depth", fuse_depth);
+    v.field("end_on_collision", end_on_collision);
   }
 };
 
@@ -275,6 +324,7 @@ struct Config {
   ObjectsConfig objects;
   RegionsConfig regions;
   ExplorationConfig exploration;
+  EpisodeConfig episode;
   template <class V> void visit(V& v) {
     v.section("sim", sim);
     v.section("mapping", mapping);
@@ -283,6 +333,7 @@ struct Config {
     v.section("objects", objects);
     v.section("regions", regions);
     v.section("exploration", exploration);
+    v.section("episode", episode);
   }
 };
 

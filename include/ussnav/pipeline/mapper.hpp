@@ -24,6 +24,8 @@ struct MapperOptions {
   bool skeleton = true;  // grow the connectivity graph
   bool objects = true;   // run the detector and the object layer on depth frames
   bool regions = true;   // partition the graph into regions (needs skeleton)
+  bool fuse_depth = false;  // with a scan, insert the depth frame into the grid as well (the
+                            // camera sees what lies in the LiDAR's blind cone below the UAV)
 };
 
 // One frame: the pose and whichever sensors fired. With a scan the scan feeds the grid (the

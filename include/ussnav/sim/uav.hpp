@@ -30,6 +30,8 @@ class Uav {
   // True when the path is finished (or empty) and the yaw target is reached.
   bool idle() const;
   bool pathDone() const { return next_ >= path_.size(); }
+  // The current position followed by the path points not reached yet.
+  std::vector<Vec3> remainingPath() const;
   const UavConfig& config() const { return cfg_; }
 
  private:

@@ -1,0 +1,94 @@
+#pragma once
+// One ObjectNav episode in the simulator (issue 7, DESIGN.md evaluation protocol): the flight
+// loop. Each frame: sense -> Mapper (grid, coverage, graph, regions, objects) -> frontiers and
+// camera coverage. When the object layer holds a confirmed object of the goal category, the UAV
+// flies to a safe pose within found_radius of it, facing it, and declares "found"; the episode
+// ends and the evaluation judges it against ground truth (a goal instance within found_radius
+// and in view). Otherwise the planner picks a target (frontier or camera-unseen patch) and a
+// viewpoint; the path comes from the connectivity graph (findGraphPath, shortcut by line of
+// sight) and is re-checked against the grid every replan period; the kinematic UAV follows it.
+// Re-plan when the viewpoint is reached, its target vanished, the path is blocked, or the
+// period elapsed. Ends on found, on exhausted targets, or on the time / distance budget.
+// The pipeline never reads ground truth; only the evaluation (success, L*, splits) does.
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "ussnav/core/config.hpp"
+#include "ussnav/core/image.hpp"
+#include "ussnav/exploration/planner.hpp"
+#include "ussnav/scene_graph/scene_graph.hpp"
+#include "ussnav/sim/world.hpp"
+
+namespace ussnav {
+
+struct EpisodeSpec {
+  World world;
+  std::string world_name;          // for reports
+  std::string goal;                // object category in free text
+  std::string planner = "frontier";
+  uint64_t seed = 1;
+  std::optional<Pose> start;       // default: the world's start pose (moved to free space)
+  RegionChooser coarse;            // optional coarse level for the `full` planner
+};
+
+struct FoundObject {
+  int id = -1;
+  std::string label;
+  Vec3 position = Vec3::Zero();
+};
+
+struct CoverageSample {
+  double t = 0.0;
+  double known_m2 = 0.0;        // free area at flight height the map has known
+  double camera_seen_m2 = 0.0;  // of that, what the camera has looked at
+};
+
+struct TrajectorySample {
+  double t = 0.0;
+  Pose pose;
+};
+
+struct EpisodeResult {
+  std::string world, goal, planner;
+  uint64_t seed = 1;
+  bool success = false;
+  double spl = 0.0;
+  double path_length_m = 0.0;
+  double shortest_path_m = -1.0;   // L*; -1 when no goal instance is reachable
+  double time_s = 0.0;
+  int frames = 0;
+  int collisions = 0;
+  std::optional<FoundObject> found_object;
+  std::string end_reason;          // found | wrong_object | explored | time_budget | distance_budget
+  int goal_instances = 0;          // ground truth
+  bool multi_room = false;         // no goal instance in the start room
+  int replans = 0, unreachable = 0;
+  double update_hz = 0.0;          // 1000 / median per-frame scene-graph update (ms)
+  nlohmann::json stage_ms;         // {stage: {median, p95, count}}
+  std::vector<CoverageSample> coverage;  // every 5 s
+  double wall_s = 0.0;
+};
+
+struct EpisodeRun {
+  EpisodeResult result;
+  SceneGraph graph;
+  std::vector<TrajectorySample> trajectory;
+  Image topdown{1, 1};
+};
+
+// Called every frame with the frame count, sim time and the result so far (for progress lines).
+using EpisodeProgress = std::function<void(const EpisodeResult&)>;
+
+// Throws InputError for an unknown planner or an empty goal. Deterministic for a seed.
+EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeProgress& progress = {});
+
+nlohmann::json toJson(const EpisodeResult& r);
+// Writes DIR/result.json, DIR/scene_graph.json, DIR/trajectory.csv and DIR/topdown.png.
+void writeEpisode(const std::string& dir, const EpisodeRun& run);
+
+}  // namespace ussnav

@@ -1,0 +1,31 @@
+#pragma once
+// The path the UAV flies to a goal (issue 7, flight loop): A* on the connectivity graph
+// (findGraphPath, edges re-checked against the grid), then line-of-sight shortcutting in the
+// grid inflated by the UAV's clearance, then every segment that still comes closer than the
+// clearance to a known obstacle is replaced by a voxel A* path in the inflated grid where the
+// window covers it. When the graph has no path and the goal lies in the window, a voxel A*
+// through known free, inflated space is the fallback. When the UAV itself stands inside the
+// clearance margin (the map grew an obstacle next to it), the path first steps straight to the
+// nearest voxel with full clearance within 0.8 m that it can reach keeping `body_radius` from
+// every mapped obstacle. nullopt when no safe path is found: a segment is never returned that
+// the inflated map shows blocked. Paths stay in the band [z_min, z_max] (voxels outside it
+// count as obstacles; graph points are clamped into it).
+
+#include <optional>
+#include <vector>
+
+#include "ussnav/mapping/rolling_grid.hpp"
+#include "ussnav/skeleton/connectivity_graph.hpp"
+
+namespace ussnav {
+
+struct FlightPathOptions {
+  double clearance = 0.4;     // from mapped obstacles, m
+  double body_radius = 0.27;  // the escape step keeps at least this, m
+  double z_min = 0.5, z_max = 2.0;  // flight band: graph points are clamped into it
+};
+
+std::optional<std::vector<Vec3>> planFlightPath(const ConnectivityGraph& g, const RollingGrid& grid, const Vec3& from,
+                                                const Vec3& to, const FlightPathOptions& opt);
+
+}  // namespace ussnav

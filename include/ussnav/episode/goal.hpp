@@ -1,0 +1,40 @@
+#pragma once
+// The goal of an ObjectNav episode: a category named in free text ("bed", "sofa"). An object
+// label matches when the text encoder puts it within `threshold` cosine of the goal (synonyms
+// such as couch / sofa coincide under the WordNet encoder). The same rule serves the pipeline
+// (which mapped object is the target?) and the evaluation (which ground-truth instances are?).
+// Matching is cached per label; thread-safe for concurrent const use once built.
+
+#include <memory>
+#include <mutex>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "ussnav/perception/text_encoder.hpp"
+
+namespace ussnav {
+
+struct World;
+struct Object;
+
+class GoalMatcher {
+ public:
+  // Throws InputError (file "goal") on an empty goal.
+  GoalMatcher(std::string goal, std::shared_ptr<const TextEncoder> encoder, double threshold);
+  bool matches(const std::string& label) const;
+  double similarity(const std::string& label) const;
+  const std::string& goal() const { return goal_; }
+
+ private:
+  std::string goal_;
+  std::shared_ptr<const TextEncoder> encoder_;
+  double threshold_;
+  mutable std::mutex mutex_;
+  mutable std::unordered_map<std::string, double> cache_;
+};
+
+// Ground-truth instances of the goal in `world` (evaluation only).
+std::vector<const Object*> goalInstances(const World& world, const GoalMatcher& goal);
+
+}  // namespace ussnav

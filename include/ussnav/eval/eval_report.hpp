@@ -1,0 +1,35 @@
+#pragma once
+// Rows of DIR/episodes.csv (one finished episode each) and the summary tables built from them
+// (summary.json: {planner: {split: {episodes, sr, spl, path_length_m, time_s, collisions}}} with
+// splits single_room, multi_room, all; summary.md: the same as Markdown tables).
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "ussnav/episode/episode.hpp"
+
+namespace ussnav {
+
+struct EpisodeRow {
+  std::string world, goal, planner, split, end_reason, found_label;
+  uint64_t seed = 1;
+  bool success = false;
+  double spl = 0, path_length_m = 0, shortest_path_m = -1, time_s = 0, update_hz = 0, wall_s = 0;
+  int frames = 0, collisions = 0;
+  std::string key() const;  // world|goal|planner|seed
+};
+
+EpisodeRow rowOf(const EpisodeResult& r);
+std::string csvHeader();
+std::string toCsv(const EpisodeRow& r);
+// Reads the rows of an episodes.csv; lines that do not parse (an interrupted write) are
+// skipped and counted in *bad. A missing file gives no rows.
+std::vector<EpisodeRow> readEpisodesCsv(const std::filesystem::path& path, int* bad = nullptr);
+
+nlohmann::json summaryJson(const std::vector<EpisodeRow>& rows);
+std::string summaryMarkdown(const std::vector<EpisodeRow>& rows, const std::string& title);
+
+}  // namespace ussnav

@@ -1,0 +1,55 @@
+#include "ussnav/episode/approach.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ussnav {
+
+double distanceToBox(const Aabb& box, const Vec3& p) {
+  const Vec3 d = (box.min - p).cwiseMax(p - box.max).cwiseMax(Vec3::Zero());
+  return d.norm();
+}
+
+std::vector<ApproachPose> approachPoses(const OccupancyMap& map, const GraphDistances& from_uav, const Aabb& box,
+                                        double flight_z, const Config& cfg, int max_poses) {
+  std::vector<ApproachPose> out;
+  if (box.empty()) return out;
+  const EpisodeConfig& ep = cfg.episode;
+  const double reach = ep.found_radius - ep.found_margin;
+  const double clearance = cfg.sim.uav.radius + 0.05;
+  const double half_v = deg2rad(0.5 * cfg.sim.camera.vfov_deg - 5.0);
+  const Vec3 c = box.center();
+  const Vec3 half = 0.5 * box.size();
+  for (double dz : {0.0, -0.3, -0.6}) {
+    const double z = flight_z + dz;
+    if (z < clearance + 0.2) continue;
+    for (int a = 0; a < 24; ++a) {
+      const double phi = a * 2.0 * kPi / 24.0;
+      const Vec2 dir(std::cos(phi), std::sin(phi));
+      // Distance from the box centre to its side along dir.
+      const double tx = std::abs(dir.x()) > 1e-9 ? half.x() / std::abs(dir.x()) : 1e9;
+      const double ty = std::abs(dir.y()) > 1e-9 ? half.y() / std::abs(dir.y()) : 1e9;
+      const double side = std::min(tx, ty);
+      for (double gap : {0.2, 0.4, 0.6, 0.8}) {
+        const Vec2 xy = c.head<2>() + dir * (side + gap);
+        const Vec3 p(xy.x(), xy.y(), z);
+        if (distanceToBox(box, p) > reach) continue;
+        if (!map.inWindow(map.keyOf(p)) || !isSafe(map, p, clearance, true)) continue;
+        const Vec3 to = c - p;
+        const double horiz = to.head<2>().norm();
+        const double zt = std::clamp(p.z(), box.min.z(), box.max.z());
+        if (std::atan2(std::abs(p.z() - zt), std::max(horiz, 0.05)) > half_v) continue;  // the box centre in view
+        const RayHit hit = castRay(map, p, c, false);
+        if (hit.blocked && distanceToBox(box, hit.point) > 0.2) continue;
+        const double cost = from_uav.toPoint(p);
+        if (!std::isfinite(cost)) continue;
+        out.push_back(ApproachPose{p, std::atan2(to.y(), to.x()), cost});
+      }
+    }
+  }
+  std::stable_sort(out.begin(), out.end(), [](const ApproachPose& a, const ApproachPose& b) { return a.cost_m < b.cost_m; });
+  if (int(out.size()) > max_poses) out.resize(size_t(max_poses));
+  return out;
+}
+
+}  // namespace ussnav

@@ -1,0 +1,447 @@
+#include "ussnav/episode/episode.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+
+#include "ussnav/core/timing.hpp"
+#include "ussnav/episode/approach.hpp"
+#include "ussnav/episode/goal.hpp"
+#include "ussnav/episode/episode_drawing.hpp"
+#include "ussnav/episode/flight_path.hpp"
+#include "ussnav/eval/metrics.hpp"
+#include "ussnav/exploration/camera_coverage.hpp"
+#include "ussnav/exploration/frontier.hpp"
+#include "ussnav/exploration/graph_costs.hpp"
+#include "ussnav/mapping/inflated_map.hpp"
+#include "ussnav/perception/oracle_detector.hpp"
+#include "ussnav/pipeline/mapper.hpp"
+#include "ussnav/sim/simulator.hpp"
+#include "ussnav/sim/uav.hpp"
+#include "ussnav/skeleton/graph_search.hpp"
+
+namespace ussnav {
+
+namespace {
+
+// Evaluation only: L* and the split, from ground truth.
+struct GroundTruthGoal {
+  std::vector<const Object*> instances;
+  double shortest_path = -1.0;
+  bool multi_room = false;
+};
+
+GroundTruthGoal evaluateGoal(const Simulator& sim, const GoalMatcher& goal, const Pose& start, double found_radius) {
+  GroundTruthGoal g;
+  const World& w = sim.world();
+  g.instances = goalInstances(w, goal);
+  if (g.instances.empty()) return g;
+  const GtPlanner& planner = sim.planner();
+  std::vector<Vec2> goals;
+  for (const Vec2& p : planner.freeSamples(2))
+    for (const Object* o : g.instances)
+      // Approach poses may sink up to 0.6 m below flight height (approach.hpp).
+      if (o->box.distance(Vec3(p.x(), p.y(), std::clamp(o->box.center.z(), planner.flightZ() - 0.6, planner.flightZ()))) <=
+          found_radius) {
+        goals.push_back(p);
+        break;
+      }
+  if (!goals.empty())
+    if (auto path = planner.shortestPath(start.position.head<2>(), goals)) g.shortest_path = GtPlanner::length(*path);
+  const Room* start_room = w.roomAt(start.position.head<2>());
+  if (start_room) {
+    g.multi_room = std::none_of(g.instances.begin(), g.instances.end(),
+                                [&](const Object* o) { return o->room_id == start_room->id; });
+  } else {
+    g.multi_room = g.shortest_path > 8.0;  // worlds without rooms: far counts as multi-room
+  }
+  return g;
+}
+
+// Evaluation only: is a goal instance within found_radius and in view from this frame?
+bool judgeFound(const GroundTruthGoal& g, const Pose& pose, const DepthFrame& frame, double found_radius, int min_pixels) {
+  std::map<int, int> pixels;
+  for (uint16_t id : frame.instance)
+    if (id) ++pixels[id];
+  for (const Object* o : g.instances)
+    if (o->box.distance(pose.position) <= found_radius && pixels[o->id] >= min_pixels) return true;
+  return false;
+}
+
+struct Goal {
+  bool active = false;
+  TargetKind kind = TargetKind::Frontier;
+  Vec3 centroid = Vec3::Zero();
+  Viewpoint vp;
+  std::vector<Vec2i> patch_cells;  // unseen targets
+  std::vector<Vec3> path;
+};
+
+struct Blacklisted {
+  Vec3 centroid;
+  double until;
+};
+
+// Whether the first `horizon` metres of a polyline cross an inflated obstacle.
+bool pathBlocked(const OccupancyMap& map, const std::vector<Vec3>& path, double horizon) {
+  double walked = 0.0;
+  for (size_t i = 1; i < path.size() && walked < horizon; ++i) {
+    if (castRay(map, path[i - 1], path[i], false).blocked) return true;
+    walked += (path[i] - path[i - 1]).norm();
+  }
+  return false;
+}
+
+}  // namespace
+
+EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeProgress& progress) {
+  const Stopwatch wall;
+  const EpisodeConfig& ep = cfg.episode;
+  EpisodeRun run;
+  EpisodeResult& R = run.result;
+  R.world = spec.world_name;
+  R.goal = spec.goal;
+  R.planner = spec.planner;
+  R.seed = spec.seed;
+
+  std::unique_ptr<ExplorationPlanner> planner = makePlanner(spec.planner, spec.coarse);
+  Simulator sim(spec.world, cfg, spec.seed);
+  const Pose start = spec.start ? *spec.start : sim.startPose();
+  const std::shared_ptr<const TextEncoder> encoder(makeTextEncoder(cfg.perception));
+  const GoalMatcher goal(spec.goal, encoder, ep.goal_similarity);
+  const GroundTruthGoal truth = evaluateGoal(sim, goal, start, ep.found_radius);
+  R.goal_instances = int(truth.instances.size());
+  R.shortest_path_m = truth.shortest_path;
+  R.multi_room = truth.multi_room;
+
+  auto detector = std::make_unique<OracleDetector>(sim.instanceLabels(), OracleRealism::fromConfig(cfg.perception), spec.seed);
+  MapperOptions mopt;
+  mopt.fuse_depth = ep.fuse_depth;
+  Mapper mapper(cfg, mopt, std::move(detector));
+  FrontierFinder frontiers(cfg.exploration);
+  const double flight_z = start.position.z();
+  CameraCoverage camera(cfg.exploration, flight_z);
+  Uav uav(cfg.sim.uav, start);
+  StageTimes times;
+  const double dt = 1.0 / cfg.sim.frame_rate_hz;
+  // Flight paths keep ep.clearance from mapped obstacles, or the UAV radius + 0.1 m (a point in a
+  // voxel is up to 0.087 m from its centre) where no
+  // path keeps that much (narrow doors).
+  FlightPathOptions fopt;
+  fopt.clearance = ep.clearance;
+  fopt.body_radius = cfg.sim.uav.radius + 0.02;
+  fopt.z_min = std::max(cfg.sim.uav.radius + 0.25, flight_z - 0.7);
+  fopt.z_max = flight_z + 0.8;
+  auto flightPath = [&](const Vec3& a, const Vec3& b) {
+    auto p = planFlightPath(mapper.graph(), mapper.grid(), a, b, fopt);
+    if (!p && ep.clearance > cfg.sim.uav.radius + 0.1) {
+      FlightPathOptions narrow = fopt;
+      narrow.clearance = cfg.sim.uav.radius + 0.1;
+      p = planFlightPath(mapper.graph(), mapper.grid(), a, b, narrow);
+    }
+    return p;
+  };
+
+  Goal g;
+  std::vector<Blacklisted> blacklist;
+  std::map<int, double> failed_objects;  // object id -> retry time
+  bool approaching = false;
+  int approach_object = -1;
+  ApproachPose approach;
+  double last_check = -1e9;
+  int spins_left = -1;  // -1: not spinning; else yaw steps left before giving up
+  double t = 0.0;
+  double next_cov = 0.0;
+  std::vector<ExplorationTarget> targets;
+
+  auto sample = [&] { run.trajectory.push_back({t, uav.pose()}); };
+  // An unreachable target is skipped for blacklist_s; the third time for good.
+  auto blacklistUnreachable = [&](const Vec3& c) {
+    const auto times = std::count_if(blacklist.begin(), blacklist.end(),
+                                     [&](const Blacklisted& b) { return (b.centroid - c).norm() < 0.75; });
+    blacklist.push_back({c, times >= 2 ? 1e18 : t + ep.blacklist_s});
+  };
+  auto pendingRetry = [&] {
+    return std::any_of(blacklist.begin(), blacklist.end(), [&](const Blacklisted& b) { return b.until > t && b.until < 1e17; });
+  };
+  auto blacklisted = [&](const Vec3& c) {
+    return std::any_of(blacklist.begin(), blacklist.end(),
+                       [&](const Blacklisted& b) { return b.until > t && (b.centroid - c).norm() < 0.75; });
+  };
+
+  while (true) {
+    SensedFrame f = sim.sense(uav.pose(), t);
+    const MapperFrameReport rep = mapper.process(MapperFrame{f.pose, f.scan ? &*f.scan : nullptr, &f.depth, t});
+    double frame_ms = rep.total_ms;
+    {
+      const Stopwatch sw;
+      frontiers.update(mapper.grid(), mapper.coverage(), mapper.anchorNode(f.pose.position), t);
+      const double ms = sw.ms();
+      times.add("frontiers", ms);
+      frame_ms += ms;
+    }
+    {
+      const Stopwatch sw;
+      camera.updateKnown(mapper.grid());
+      camera.updateSeen(f.depth);
+      const double ms = sw.ms();
+      times.add("camera_coverage", ms);
+      frame_ms += ms;
+    }
+    times.add("frame_update", frame_ms);
+    ++R.frames;
+    sample();
+    if (t >= next_cov) {
+      R.coverage.push_back({t, camera.knownArea(), camera.seenKnownArea()});
+      next_cov += 5.0;
+    }
+
+    // --- Decide -------------------------------------------------------------------------
+    const Stopwatch plan_sw;
+    const RollingGrid& grid = mapper.grid();
+    const ConnectivityGraph& graph = mapper.graph();
+    bool end = false;
+
+    // 1. A confirmed object of the goal category: approach it and declare.
+    if (approaching && uav.idle() && (uav.pose().position - approach.position).norm() <= ep.goal_tolerance) {
+      const MappedObject* o = mapper.objects()->find(approach_object);
+      R.found_object = FoundObject{approach_object, o ? o->label : "", o ? o->centroid : Vec3::Zero()};
+      R.success = judgeFound(truth, uav.pose(), f.depth, ep.found_radius, cfg.perception.min_pixels);
+      R.end_reason = R.success ? "found" : "wrong_object";
+      end = true;
+    }
+    if (!end && !approaching && mapper.objects() && graph.size() > 0) {
+      const MappedObject* best = nullptr;
+      double best_d = 1e18;
+      for (const MappedObject& o : mapper.objects()->objects()) {
+        if (!o.confirmed || o.n_observations < ep.target_min_observations || !goal.matches(o.label)) continue;
+        auto it = failed_objects.find(o.id);
+        if (it != failed_objects.end() && it->second > t) continue;
+        const double d = (o.centroid - uav.pose().position).norm();
+        if (d < best_d) best_d = d, best = &o;
+      }
+      if (best) {
+        const GraphDistances gd(graph, grid, uav.pose().position);
+        bool ok = false;
+        for (const ApproachPose& ap : approachPoses(grid, gd, best->box, flight_z, cfg)) {
+          const auto p = flightPath(uav.pose().position, ap.position);
+          if (!p) continue;
+          approaching = true, approach_object = best->id, approach = ap;
+          g = Goal{};
+          g.active = true;
+          g.path = *p;
+          uav.setPath(*p);
+          ok = true;
+          break;
+        }
+        if (!ok) {
+          failed_objects[best->id] = t + ep.blacklist_s;
+          ++R.unreachable;
+        }
+      }
+    }
+
+    // 2. Otherwise explore.
+    if (!end && !approaching) {
+      bool need = !g.active || uav.pathDone();
+      if (g.active && uav.pathDone()) {
+        const double dyaw = std::abs(wrapAngle(g.vp.yaw - uav.pose().yaw));
+        need = dyaw < 0.05 || (uav.pose().position - g.vp.position).norm() > ep.goal_tolerance;  // turned, or dropped
+        if (need && (uav.pose().position - g.vp.position).norm() <= ep.goal_tolerance) {
+          // Reached the viewpoint: whatever is left of its target is not visible from here.
+          if (g.kind == TargetKind::Unseen) camera.abandon(g.patch_cells);
+          blacklist.push_back({g.centroid, 1e18});
+        }
+      }
+      if (g.active && !need && t - last_check >= ep.replan_period_s) {
+        last_check = t;
+        // Target still there? Path still clear?
+        bool alive = false;
+        if (g.kind == TargetKind::Frontier) {
+          for (const Frontier& fr : frontiers.frontiers())
+            if ((fr.centroid - g.centroid).norm() < 1.0) alive = true;
+        } else {
+          int unseen = 0;
+          for (const Vec2i& c : g.patch_cells) unseen += !camera.isSeen(c);
+          alive = unseen >= std::max(1, cfg.exploration.unseen_min_cells / 2);
+        }
+        if (!alive) need = true;
+      }
+      if (g.active && !need && !uav.pathDone()) {
+        // Every frame: the next metres of the path against what the map knows now.
+        const InflatedMap inflated(grid, cfg.sim.uav.radius + 0.1);
+        if (pathBlocked(inflated, uav.remainingPath(), 4.0)) need = true;
+      }
+      if (need && spins_left > 0 && !uav.idle()) need = false;  // finish the current spin step
+      if (need) {
+        last_check = t;
+        targets.clear();
+        for (const Frontier& fr : frontiers.frontiers()) {
+          if (fr.viewpoints.empty() || blacklisted(fr.centroid)) continue;
+          ExplorationTarget tg;
+          tg.kind = TargetKind::Frontier;
+          tg.source_id = fr.id;
+          tg.centroid = fr.centroid;
+          tg.viewpoints = fr.viewpoints;
+          tg.gain = fr.viewpoints.front().gain * 1.0;
+          targets.push_back(std::move(tg));
+        }
+        std::vector<UnseenPatch> patches = camera.patches();
+        for (const UnseenPatch& p : patches) {
+          if (p.viewpoints.empty() || blacklisted(p.centroid)) continue;
+          ExplorationTarget tg;
+          tg.kind = TargetKind::Unseen;
+          tg.source_id = p.id;
+          tg.centroid = p.centroid;
+          tg.viewpoints = p.viewpoints;
+          tg.gain = p.viewpoints.front().gain * 4.0;
+          targets.push_back(std::move(tg));
+        }
+        if (std::getenv("USSNAV_DEBUG_EPISODE"))
+          std::fprintf(stderr, "[t=%.1f] frontiers %zu (cells %zu) patches %zu targets %zu blacklist %zu spins %d\n", t,
+                       frontiers.frontiers().size(), frontiers.cellCount(), patches.size(), targets.size(), blacklist.size(), spins_left);
+        for (ExplorationTarget& tg : targets) {
+          const int node = mapper.anchorNode(tg.viewpoints.front().position);
+          tg.region = node >= 0 ? mapper.regions().regionOf(node) : -1;
+        }
+        g.active = false;
+        uav.setPath({});  // hover unless a new path is found below
+        while (!targets.empty() && graph.size() > 0) {
+          PlanInput in;
+          in.graph = &graph;
+          in.map = &grid;
+          in.uav = uav.pose();
+          in.time = t;
+          in.targets = &targets;
+          in.uav_cfg = &cfg.sim.uav;
+          in.episode_cfg = &ep;
+          in.region_of = [&](int node) { return mapper.regions().regionOf(node); };
+          const PlanChoice choice = planner->choose(in);
+          if (choice.target < 0) break;
+          ++R.replans;
+          const ExplorationTarget& tg = targets[size_t(choice.target)];
+          const Viewpoint& vp = tg.viewpoints[size_t(choice.viewpoint)];
+          const auto p = flightPath(uav.pose().position, vp.position);
+          if (p) {
+            g.active = true;
+            g.kind = tg.kind;
+            g.centroid = tg.centroid;
+            g.vp = vp;
+            g.path = *p;
+            g.patch_cells.clear();
+            if (tg.kind == TargetKind::Unseen) g.patch_cells = patches[size_t(tg.source_id)].cells;
+            uav.setPath(*p);
+            spins_left = -1;
+            break;
+          }
+          ++R.unreachable;
+          blacklistUnreachable(tg.centroid);
+          targets.erase(targets.begin() + choice.target);
+        }
+        if (!g.active) {
+          // Nothing to fly to: turn on the spot (three 120-degree steps) to let the camera and
+          // the map catch up, then give up.
+          if (spins_left < 0) spins_left = 3;
+          if (spins_left == 0) {
+            if (!pendingRetry()) {
+              R.end_reason = "explored";
+              end = true;
+            }  // else hover until a skipped target may be tried again
+          } else if (uav.idle()) {
+            --spins_left;
+            uav.setPath({});
+            uav.setYawTarget(wrapAngle(uav.pose().yaw + 2.0 * kPi / 3.0));
+          }
+        }
+      }
+      if (g.active) {
+        double remaining = 0.0;
+        // Face the viewpoint's yaw for the last metre; the direction of travel before.
+        remaining = (uav.pose().position - g.vp.position).norm();
+        if (remaining < 1.0 || uav.pathDone())
+          uav.setYawTarget(g.vp.yaw);
+        else
+          uav.clearYawTarget();
+      }
+    } else if (approaching && !end) {
+      if ((uav.pose().position - approach.position).norm() < 1.0 || uav.pathDone())
+        uav.setYawTarget(approach.yaw);
+      else
+        uav.clearYawTarget();
+      const InflatedMap inflated(grid, cfg.sim.uav.radius + 0.1);
+      if (!uav.pathDone() && pathBlocked(inflated, uav.remainingPath(), 4.0)) {
+        approaching = false;  // the map now shows an obstacle on the way: choose again
+        uav.setPath({});
+      } else if (uav.pathDone() && (uav.pose().position - approach.position).norm() > ep.goal_tolerance) {
+        approaching = false;  // dropped (collision): re-plan
+        failed_objects[approach_object] = t + ep.blacklist_s;
+      }
+    }
+    times.add("planning", plan_sw.ms());
+
+    R.time_s = t;
+    R.path_length_m = uav.distanceTravelled();
+    R.collisions = uav.collisions();
+    if (progress) progress(R);
+    if (end) break;
+    if (t >= ep.max_time_s) {
+      R.end_reason = "time_budget";
+      break;
+    }
+    if (ep.max_distance_m > 0 && uav.distanceTravelled() >= ep.max_distance_m) {
+      R.end_reason = "distance_budget";
+      break;
+    }
+    const Pose before = uav.pose();
+    if (!uav.step(sim.groundTruth(), dt)) {
+      g.active = false;  // collision: the UAV dropped its path
+      if (std::getenv("USSNAV_DEBUG_EPISODE")) {
+        std::fprintf(stderr, "[t=%.1f] COLLISION at (%.2f %.2f %.2f) approaching=%d path:", t, before.position.x(),
+                     before.position.y(), before.position.z(), int(approaching));
+        for (const Vec3& q : g.path) std::fprintf(stderr, " (%.2f %.2f %.2f)", q.x(), q.y(), q.z());
+        std::fprintf(stderr, "\n");
+        const RollingGrid& gr = mapper.grid();
+        const Vec3i c = gr.keyOf(before.position);
+        for (int dz = -3; dz <= 3; dz += 3) {
+          std::fprintf(stderr, "  z%+d:\n", dz);
+          for (int dy = 4; dy >= -4; --dy) {
+            std::fprintf(stderr, "   ");
+            for (int dx = -4; dx <= 4; ++dx) {
+              const VoxelState st = gr.state(c + Vec3i(dx, dy, dz));
+              const Vec3 q = gr.centerOf(c + Vec3i(dx, dy, dz));
+              const bool gtocc = sim.groundTruth().sphereCollides(q, 0.02);
+              std::fprintf(stderr, "%c", st == VoxelState::Occupied ? (gtocc ? '#' : 'o') : st == VoxelState::Free ? (gtocc ? '!' : '.') : (gtocc ? 'U' : '?'));
+            }
+            std::fprintf(stderr, "\n");
+          }
+        }
+      }
+      if (ep.end_on_collision) {
+        R.end_reason = "collision";
+        t += dt;
+        R.collisions = uav.collisions();
+        break;
+      }
+    }
+    t += dt;
+  }
+
+  R.time_s = t;
+  R.path_length_m = uav.distanceTravelled();
+  R.collisions = uav.collisions();
+  R.spl = R.success && R.shortest_path_m >= 0 ? splOf(true, R.path_length_m, std::max(R.shortest_path_m, 1e-6)) : 0.0;
+  nlohmann::json stages = mapper.times().summary();
+  const nlohmann::json mine = times.summary();
+  for (auto it = mine.begin(); it != mine.end(); ++it) stages[it.key()] = it.value();
+  R.stage_ms = stages;
+  const double med = times.median("frame_update");
+  R.update_hz = med > 0 ? 1000.0 / med : 0.0;
+  run.graph = buildSceneGraph(mapper, t, spec.world_name);
+  run.topdown = drawEpisode(spec.world, run, camera, truth.instances, start);
+  R.wall_s = wall.ms() / 1000.0;
+  return run;
+}
+
+}  // namespace ussnav

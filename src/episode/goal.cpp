@@ -1,0 +1,46 @@
+#include "ussnav/episode/goal.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+#include "ussnav/core/error.hpp"
+#include "ussnav/sim/world.hpp"
+
+namespace ussnav {
+
+namespace {
+std::string normalise(std::string s) {
+  for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+  for (char& c : s)
+    if (c == '_') c = ' ';
+  const auto b = s.find_first_not_of(" \t\n"), e = s.find_last_not_of(" \t\n");
+  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
+}  // namespace
+
+GoalMatcher::GoalMatcher(std::string goal, std::shared_ptr<const TextEncoder> encoder, double threshold)
+    : goal_(normalise(std::move(goal))), encoder_(std::move(encoder)), threshold_(threshold) {
+  if (goal_.empty()) throw InputError("goal", "goal", "an object category is required, e.g. \"bed\"");
+  if (!encoder_) throw InputError("goal", "encoder", "a text encoder is required");
+}
+
+double GoalMatcher::similarity(const std::string& label) const {
+  const std::string l = normalise(label);
+  std::lock_guard<std::mutex> lock(mutex_);
+  auto it = cache_.find(l);
+  if (it != cache_.end()) return it->second;
+  const double s = l == goal_ ? 1.0 : encoder_->similarity(goal_, l);
+  cache_.emplace(l, s);
+  return s;
+}
+
+bool GoalMatcher::matches(const std::string& label) const { return similarity(label) >= threshold_; }
+
+std::vector<const Object*> goalInstances(const World& world, const GoalMatcher& goal) {
+  std::vector<const Object*> out;
+  for (const Object& o : world.objects)
+    if (goal.matches(o.category)) out.push_back(&o);
+  return out;
+}
+
+}  // namespace ussnav

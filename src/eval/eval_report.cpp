@@ -1,0 +1,141 @@
+#include "ussnav/eval/eval_report.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "ussnav/eval/metrics.hpp"
+
+namespace ussnav {
+
+namespace {
+
+std::string clean(std::string s) {
+  for (char& c : s)
+    if (c == ',' || c == '\n' || c == '\r' || c == '"') c = ' ';
+  return s;
+}
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char c : line) {
+    if (c == ',') out.push_back(cur), cur.clear();
+    else cur += c;
+  }
+  out.push_back(cur);
+  return out;
+}
+
+constexpr int kColumns = 16;
+
+}  // namespace
+
+std::string EpisodeRow::key() const { return world + "|" + goal + "|" + planner + "|" + std::to_string(seed); }
+
+EpisodeRow rowOf(const EpisodeResult& r) {
+  EpisodeRow w;
+  w.world = r.world, w.goal = r.goal, w.planner = r.planner, w.seed = r.seed;
+  w.split = r.multi_room ? "multi_room" : "single_room";
+  w.success = r.success, w.spl = r.spl, w.path_length_m = r.path_length_m, w.shortest_path_m = r.shortest_path_m;
+  w.time_s = r.time_s, w.frames = r.frames, w.collisions = r.collisions, w.end_reason = r.end_reason;
+  w.found_label = r.found_object ? r.found_object->label : "";
+  w.update_hz = r.update_hz, w.wall_s = r.wall_s;
+  return w;
+}
+
+std::string csvHeader() {
+  return "world,goal,planner,seed,split,success,spl,path_length_m,shortest_path_m,time_s,frames,collisions,end_reason,"
+         "found_label,update_hz,wall_s";
+}
+
+std::string toCsv(const EpisodeRow& r) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf, "%s,%s,%s,%llu,%s,%d,%.4f,%.3f,%.3f,%.2f,%d,%d,%s,%s,%.1f,%.2f", clean(r.world).c_str(),
+                clean(r.goal).c_str(), clean(r.planner).c_str(), static_cast<unsigned long long>(r.seed), r.split.c_str(),
+                int(r.success), r.spl, r.path_length_m, r.shortest_path_m, r.time_s, r.frames, r.collisions,
+                clean(r.end_reason).c_str(), clean(r.found_label).c_str(), r.update_hz, r.wall_s);
+  return buf;
+}
+
+std::vector<EpisodeRow> readEpisodesCsv(const std::filesystem::path& path, int* bad) {
+  std::vector<EpisodeRow> rows;
+  if (bad) *bad = 0;
+  std::ifstream in(path);
+  if (!in) return rows;
+  std::string line;
+  bool header = true;
+  while (std::getline(in, line)) {
+    if (header) {
+      header = false;
+      if (line == csvHeader()) continue;
+    }
+    const auto f = split(line);
+    try {
+      if (int(f.size()) != kColumns) throw std::invalid_argument("columns");
+      EpisodeRow r;
+      r.world = f[0], r.goal = f[1], r.planner = f[2], r.seed = std::stoull(f[3]), r.split = f[4];
+      if (r.split != "single_room" && r.split != "multi_room") throw std::invalid_argument("split");
+      r.success = std::stoi(f[5]) != 0, r.spl = std::stod(f[6]), r.path_length_m = std::stod(f[7]);
+      r.shortest_path_m = std::stod(f[8]), r.time_s = std::stod(f[9]), r.frames = std::stoi(f[10]);
+      r.collisions = std::stoi(f[11]), r.end_reason = f[12], r.found_label = f[13], r.update_hz = std::stod(f[14]);
+      r.wall_s = std::stod(f[15]);
+      rows.push_back(r);
+    } catch (const std::exception&) {
+      if (bad) ++*bad;
+    }
+  }
+  return rows;
+}
+
+nlohmann::json summaryJson(const std::vector<EpisodeRow>& rows) {
+  std::map<std::string, std::map<std::string, std::vector<EpisodeOutcome>>> by;
+  for (const EpisodeRow& r : rows) {
+    const EpisodeOutcome o{r.success, r.path_length_m, std::max(r.shortest_path_m, 1e-6), r.time_s, r.collisions};
+    by[r.planner][r.split].push_back(o);
+    by[r.planner]["all"].push_back(o);
+  }
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [planner, splits] : by) {
+    for (const char* split : {"single_room", "multi_room", "all"}) {
+      const auto it = splits.find(split);
+      const std::vector<EpisodeOutcome> none;
+      const std::vector<EpisodeOutcome>& eps = it == splits.end() ? none : it->second;
+      // summarize() recomputes SPL from the lengths; the rows carry the episode's own SPL.
+      SplitSummary s = summarize(eps);
+      double spl = 0;
+      int n = 0;
+      for (const EpisodeRow& r : rows)
+        if (r.planner == planner && (std::string(split) == "all" || r.split == split)) spl += r.spl, ++n;
+      s.spl = n ? spl / n : 0.0;
+      j[planner][split] = {{"episodes", s.episodes}, {"sr", s.sr}, {"spl", s.spl}, {"path_length_m", s.path_length_m},
+                           {"time_s", s.time_s}, {"collisions", s.collisions}};
+    }
+  }
+  return j;
+}
+
+std::string summaryMarkdown(const std::vector<EpisodeRow>& rows, const std::string& title) {
+  const nlohmann::json j = summaryJson(rows);
+  std::ostringstream md;
+  md << "# " << title << "\n\n" << rows.size() << " episodes.\n\n";
+  for (const char* split : {"all", "single_room", "multi_room"}) {
+    md << "## " << split << "\n\n| planner | episodes | SR | SPL | path (m) | time (s) | collisions |\n"
+       << "|---|---:|---:|---:|---:|---:|---:|\n";
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      const auto& s = it.value()[split];
+      char line[256];
+      std::snprintf(line, sizeof line, "| %s | %d | %.3f | %.3f | %.1f | %.1f | %.2f |\n", it.key().c_str(),
+                    s["episodes"].get<int>(), s["sr"].get<double>(), s["spl"].get<double>(),
+                    s["path_length_m"].get<double>(), s["time_s"].get<double>(), s["collisions"].get<double>());
+      md << line;
+    }
+    md << "\n";
+  }
+  md << "SR: success rate; SPL = S * L* / max(L, L*) averaged over episodes (DESIGN.md); single_room: a goal "
+        "instance is in the start room; multi_room: none is.\n";
+  return md.str();
+}
+
+}  // namespace ussnav
