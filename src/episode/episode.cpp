@@ -39,15 +39,20 @@ GroundTruthGoal evaluateGoal(const Simulator& sim, const GoalMatcher& goal, cons
   g.instances = goalInstances(w, goal);
   if (g.instances.empty()) return g;
   const GtPlanner& planner = sim.planner();
+  // Success poses: free cells within found_radius of a goal instance's box (approach poses may
+  // sink up to 0.6 m below flight height, approach.hpp) from which the instance is in sight.
+  const GroundTruthGrid& gt = sim.groundTruth();
   std::vector<Vec2> goals;
   for (const Vec2& p : planner.freeSamples(2))
-    for (const Object* o : g.instances)
-      // Approach poses may sink up to 0.6 m below flight height (approach.hpp).
-      if (o->box.distance(Vec3(p.x(), p.y(), std::clamp(o->box.center.z(), planner.flightZ() - 0.6, planner.flightZ()))) <=
-          found_radius) {
-        goals.push_back(p);
-        break;
-      }
+    for (const Object* o : g.instances) {
+      const Vec3 q(p.x(), p.y(), std::clamp(o->box.center.z(), planner.flightZ() - 0.6, planner.flightZ()));
+      if (o->box.distance(q) > found_radius) continue;
+      const Vec3 to = o->box.center - q;
+      const GroundTruthGrid::Hit hit = gt.raycast(q, to.normalized(), to.norm() + 0.1);
+      if (!hit.hit || gt.instanceOfLabel(hit.label) != o->id) continue;
+      goals.push_back(p);
+      break;
+    }
   if (!goals.empty())
     if (auto path = planner.shortestPath(start.position.head<2>(), goals)) g.shortest_path = GtPlanner::length(*path);
   const Room* start_room = w.roomAt(start.position.head<2>());
@@ -134,6 +139,8 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
   fopt.body_radius = cfg.sim.uav.radius + 0.02;
   fopt.z_min = std::max(cfg.sim.uav.radius + 0.25, flight_z - 0.7);
   fopt.z_max = flight_z + 0.8;
+  fopt.waypoint_z_min = flight_z - 0.3;
+  fopt.waypoint_z_max = flight_z + 0.3;
   auto flightPath = [&](const Vec3& a, const Vec3& b) {
     auto p = planFlightPath(mapper.graph(), mapper.grid(), a, b, fopt);
     if (!p && ep.clearance > cfg.sim.uav.radius + 0.1) {
@@ -162,6 +169,8 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
     const auto times = std::count_if(blacklist.begin(), blacklist.end(),
                                      [&](const Blacklisted& b) { return (b.centroid - c).norm() < 0.75; });
     blacklist.push_back({c, times >= 2 ? 1e18 : t + ep.blacklist_s});
+    if (std::getenv("USSNAV_DEBUG_EPISODE"))
+      std::fprintf(stderr, "[t=%.1f] unreachable (%.2f %.2f %.2f) x%d\n", t, c.x(), c.y(), c.z(), int(times) + 1);
   };
   auto pendingRetry = [&] {
     return std::any_of(blacklist.begin(), blacklist.end(), [&](const Blacklisted& b) { return b.until > t && b.until < 1e17; });
@@ -253,6 +262,9 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
           // Reached the viewpoint: whatever is left of its target is not visible from here.
           if (g.kind == TargetKind::Unseen) camera.abandon(g.patch_cells);
           blacklist.push_back({g.centroid, 1e18});
+          if (std::getenv("USSNAV_DEBUG_EPISODE"))
+            std::fprintf(stderr, "[t=%.1f] reached but %s target still open (%.2f %.2f %.2f)\n", t, toString(g.kind),
+                         g.centroid.x(), g.centroid.y(), g.centroid.z());
         }
       }
       if (g.active && !need && t - last_check >= ep.replan_period_s) {

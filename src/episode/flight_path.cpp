@@ -81,7 +81,8 @@ std::optional<std::vector<Vec3>> planFrom(const ConnectivityGraph& g, const Roll
   std::vector<Vec3> clamped{gp.points.front()};
   for (size_t i = 1; i + 1 < gp.points.size(); ++i) {
     Vec3 q = gp.points[i];
-    q.z() = std::clamp(q.z(), fo.z_min, fo.z_max);
+    q.z() = std::clamp(q.z(), std::max(fo.waypoint_z_min, fo.z_min + grid.resolution()),
+                       std::min(fo.waypoint_z_max, fo.z_max - grid.resolution()));
     if (auto s2 = snapFree(inflated, q, 0.6)) clamped.push_back(*s2);
   }
   clamped.push_back(gp.points.back());
@@ -90,9 +91,28 @@ std::optional<std::vector<Vec3>> planFrom(const ConnectivityGraph& g, const Roll
   for (size_t i = 1; i < pts.size(); ++i) {
     const Vec3 &a = pts[i - 1], &b = pts[i];
     if (castRay(inflated, a, b, false).blocked) {
-      if (!inWindow(a) || !inWindow(b)) {
-        if (dbg) std::fprintf(stderr, "  path: blocked segment out of window\n");
+      if (!inWindow(a)) {
+        if (dbg) std::fprintf(stderr, "  path: blocked segment starts outside the window\n");
         return std::nullopt;
+      }
+      if (!inWindow(b)) {
+        // The map only knows the part inside the window: detour to where the segment leaves
+        // it (0.3 m inside), and keep the rest, to be re-checked when the window gets there.
+        const double len = (b - a).norm();
+        double s_exit = 0.0;
+        for (double s2 = 0.0; s2 <= len; s2 += 0.5 * grid.resolution())
+          if (inWindow(a + (b - a) * (s2 / len))) s_exit = s2;
+        const Vec3 c0 = a + (b - a) * (std::max(0.0, s_exit - 0.3) / len);
+        const std::optional<Vec3> c = snapFree(inflated, c0, 0.6);
+        std::optional<std::vector<Vec3>> part;
+        if (c) part = gridPath(inflated, a, *c, 3.0 * (*c - a).norm() + 1.0, false, 1);
+        if (!part) {
+          if (dbg) std::fprintf(stderr, "  path: blocked segment leaving the window, no detour\n");
+          return std::nullopt;
+        }
+        out.insert(out.end(), part->begin() + 1, part->end());
+        out.push_back(b);
+        continue;
       }
       auto detour = gridPath(inflated, a, b, 3.0 * (b - a).norm() + 1.0, false, 1);
       if (!detour) {

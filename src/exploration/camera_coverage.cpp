@@ -61,7 +61,6 @@ void CameraCoverage::updateSeen(const DepthFrame& f) {
   const Intrinsics& K = f.K;
   if (K.width <= 0 || K.height <= 0 || f.depth.size() != size_t(K.width) * size_t(K.height)) return;
   const Vec3 o = f.T_world_camera.translation();
-  const Vec2i oc = cellOf(o.head<2>());
   const int s = cfg_.seen_pixel_stride;
   std::unordered_set<uint64_t> marked;  // cells marked this frame (skip repeated walks)
   for (int v = s / 2; v < K.height; v += s)
@@ -70,16 +69,21 @@ void CameraCoverage::updateSeen(const DepthFrame& f) {
       double depth = (std::isfinite(d) && d > 0) ? double(d) : f.max_range;
       const Vec3 ray_c((u + 0.5 - K.cx) / K.fx, (v + 0.5 - K.cy) / K.fy, 1.0);
       const Vec3 dir = f.T_world_camera.linear() * ray_c;  // z-depth 1 along the optical axis
-      const Vec3 end = o + dir * depth;
-      Vec2 d2 = end.head<2>() - o.head<2>();
-      const double len = d2.norm();
-      if (len > cfg_.seen_range) d2 *= cfg_.seen_range / len;
-      // Walk the 2-D cells from the camera to the end (DDA by half-cell steps is enough here).
-      const double l = d2.norm();
+      const bool hit = std::isfinite(d) && d > 0;
+      Vec3 end = o + dir * depth;
+      const double len = (end - o).head<2>().norm();
+      if (len > cfg_.seen_range) end = o + (end - o) * (cfg_.seen_range / len);
+      // Walk the 2-D cells from the camera to the end (half-cell steps). A cell counts as seen
+      // where the ray runs low enough to meet what stands on the floor there (at most
+      // flight height - seen_below); the cell where the ray ends saw its obstacle.
+      const double l = (end - o).head<2>().norm();
       const int steps = std::max(1, int(std::ceil(l / (0.5 * res_))));
-      for (int i = 0; i <= steps; ++i) {
-        const Vec2i c = cellOf(o.head<2>() + d2 * (double(i) / steps));
-        if (c == oc && i > 0) continue;
+      const double z_low = z_ - cfg_.seen_below;
+      for (int i = 1; i <= steps; ++i) {
+        const Vec3 q = o + (end - o) * (double(i) / steps);
+        const bool last = i == steps && hit && len <= cfg_.seen_range;
+        if (q.z() > z_low && !last) continue;
+        const Vec2i c = cellOf(q.head<2>());
         if (!marked.insert(pack(c)).second) continue;
         set(c, kSeen);
       }

@@ -1,5 +1,6 @@
 #include "ussnav/regions/leiden.hpp"
 
+#include <mutex>
 #include <igraph/igraph.h>
 
 #include <stdexcept>
@@ -83,6 +84,10 @@ LeidenResult leiden(int n, const std::vector<IndexedEdge>& edges, const LeidenPa
     if (e.u < 0 || e.v < 0 || e.u >= n || e.v >= n || e.u == e.v || !(e.w >= 0.0))
       throw std::invalid_argument("leiden: edge out of range, self-loop or negative weight");
 
+  // Debian's igraph keeps its error "finally" stack, error handler and default RNG in globals
+  // (not thread-local): one Leiden run at a time per process, so episodes may run in threads.
+  static std::mutex igraph_mutex;
+  const std::lock_guard<std::mutex> lock(igraph_mutex);
   ScopedErrorHandler handler;
   IntVector ev(2 * static_cast<igraph_integer_t>(edges.size()));
   RealVector wv(static_cast<igraph_integer_t>(edges.size()));

@@ -253,6 +253,8 @@ struct ExplorationConfig {
   double seen_range = 4.0;          // a camera ray marks cells up to this range, m (objects are
                                     // detected up to perception.max_range)
   int seen_pixel_stride = 4;        // every n-th depth pixel column / row is walked
+  double seen_below = 0.6;          // a ray sees a cell's floor objects where it runs at least
+                                    // this far below flight height, m
   int unseen_min_cells = 6;         // smaller unseen patches are no target
   double unseen_patch_size = 3.0;   // unseen patches are cut into tiles of this size, m
   double unseen_view_distance = 1.5;// viewpoints this far (and half, and 1.5x) from a patch, m
@@ -277,6 +279,7 @@ struct ExplorationConfig {
     v.field("seen_resolution", seen_resolution, 0.05, 2.0, "m");
     v.field("seen_range", seen_range, 0.2, 50.0, "m");
     v.field("seen_pixel_stride", seen_pixel_stride, 1, 64, "pixels");
+    v.field("seen_below", seen_below, 0.0, 10.0, "m");
     v.field("unseen_min_cells", unseen_min_cells, 1, 100000, "cells");
     v.field("unseen_patch_size", unseen_patch_size, 0.5, 50.0, "m");
     v.field("unseen_view_distance", unseen_view_distance, 0.3, 20.0, "m");

@@ -9,7 +9,8 @@
 // nearest voxel with full clearance within 0.8 m that it can reach keeping `body_radius` from
 // every mapped obstacle. nullopt when no safe path is found: a segment is never returned that
 // the inflated map shows blocked. Paths stay in the band [z_min, z_max] (voxels outside it
-// count as obstacles; graph points are clamped into it).
+// count as obstacles; graph points are clamped into a narrower band around flight height,
+// where doors and furniture leave the most room).
 
 #include <optional>
 #include <vector>
@@ -22,7 +23,8 @@ namespace ussnav {
 struct FlightPathOptions {
   double clearance = 0.4;     // from mapped obstacles, m
   double body_radius = 0.27;  // the escape step keeps at least this, m
-  double z_min = 0.5, z_max = 2.0;  // flight band: graph points are clamped into it
+  double z_min = 0.5, z_max = 2.0;  // flight band: voxels outside it count as obstacles
+  double waypoint_z_min = 0.9, waypoint_z_max = 1.5;  // graph points are clamped into this band
 };
 
 std::optional<std::vector<Vec3>> planFlightPath(const ConnectivityGraph& g, const RollingGrid& grid, const Vec3& from,

@@ -3,7 +3,9 @@
 // before the 87-degree depth camera looks at it, and objects are only detected in camera frames.
 // CameraCoverage keeps a global 2-D map at flight height (cells of seen_resolution): a cell is
 // *known* once the rolling grid holds its flight-height voxel as Free, *seen* once a camera ray
-// (every seen_pixel_stride-th pixel, walked in x-y up to min(depth, seen_range)) crossed it.
+// (every seen_pixel_stride-th pixel, walked in x-y up to min(depth, seen_range)) crossed it
+// at least seen_below under flight height (low enough to meet the objects standing there), or
+// ended in it.
 // Known-but-unseen cells form UnseenPatch targets (4-connected, cut into unseen_patch_size
 // tiles, at least unseen_min_cells) with viewpoints like a frontier's: positions on three rings
 // around the patch on known free cells with unseen_clearance, yaw at the patch centroid, gain =

@@ -1,0 +1,92 @@
+// Whole episodes in small hand-made worlds: the flight loop finds a target in the next room,
+// never collides, and its SPL is the protocol's formula; bad input is rejected.
+
+#include <gtest/gtest.h>
+
+#include "support/test_worlds.hpp"
+#include "ussnav/core/config.hpp"
+#include "ussnav/core/error.hpp"
+#include "ussnav/episode/episode.hpp"
+#include "ussnav/sim/ground_truth.hpp"
+
+using namespace ussnav;
+
+namespace {
+
+Config testConfig() {
+  Config cfg = defaultConfig();
+  cfg.episode.max_time_s = 150.0;
+  return cfg;
+}
+
+EpisodeSpec twoRoomSpec(const std::string& planner, const std::string& goal) {
+  EpisodeSpec s;
+  s.world = test::twoRooms(true);                      // start in room A at (2.5, 2)
+  test::addObject(s.world, "bed", Vec3(8.6, 3.0, 0.3), Vec3(0.9, 0.7, 0.3));  // in room B
+  test::addObject(s.world, "chair", Vec3(1.0, 0.8, 0.45), Vec3(0.25, 0.25, 0.45));  // in room A
+  s.world.objects[0].room_id = s.world.rooms[1].id;
+  s.world.objects[1].room_id = s.world.rooms[0].id;
+  s.world_name = "two-rooms";
+  s.goal = goal;
+  s.planner = planner;
+  s.seed = 3;
+  return s;
+}
+
+}  // namespace
+
+class EpisodePlanners : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EpisodePlanners, FindsTheBedInTheNextRoomWithoutCollision) {
+  const Config cfg = testConfig();
+  const EpisodeRun run = runEpisode(twoRoomSpec(GetParam(), "bed"), cfg);
+  const EpisodeResult& r = run.result;
+  EXPECT_TRUE(r.success) << r.end_reason;
+  EXPECT_EQ(r.end_reason, "found");
+  EXPECT_EQ(r.collisions, 0);
+  EXPECT_TRUE(r.multi_room);  // no bed in the start room
+  ASSERT_TRUE(r.found_object.has_value());
+  EXPECT_NEAR(r.found_object->position.x(), 8.6, 0.6);
+  EXPECT_NEAR(r.found_object->position.y(), 3.0, 0.6);
+  // SPL as DESIGN.md defines it, from the episode's own lengths.
+  ASSERT_GT(r.shortest_path_m, 0.0);
+  EXPECT_NEAR(r.spl, r.shortest_path_m / std::max(r.path_length_m, r.shortest_path_m), 1e-9);
+  // The shortest path to a pose within 1 m of the bed from (2.5, 2) through the door at x = 5:
+  // at least the straight distance to the bed's 1 m neighbourhood.
+  EXPECT_GE(r.shortest_path_m, (Vec2(7.7, 2.3) - Vec2(2.5, 2.0)).norm() - 1.0 - 0.05);
+  // Every flown position keeps the UAV radius from the ground truth.
+  const GroundTruthGrid gt(twoRoomSpec(GetParam(), "bed").world, cfg.sim.gt_resolution);
+  for (const TrajectorySample& s : run.trajectory) ASSERT_FALSE(gt.sphereCollides(s.pose.position, cfg.sim.uav.radius));
+  EXPECT_GT(r.update_hz, 0.0);
+  EXPECT_TRUE(r.stage_ms.contains("frontiers"));
+  EXPECT_TRUE(r.stage_ms.contains("skeleton"));
+}
+
+INSTANTIATE_TEST_SUITE_P(AllPlanners, EpisodePlanners, ::testing::Values("frontier", "tsp", "full"));
+
+TEST(Episode, SameSeedSameEpisode) {
+  const Config cfg = testConfig();
+  const EpisodeResult a = runEpisode(twoRoomSpec("frontier", "bed"), cfg).result;
+  const EpisodeResult b = runEpisode(twoRoomSpec("frontier", "bed"), cfg).result;
+  EXPECT_EQ(a.frames, b.frames);
+  EXPECT_DOUBLE_EQ(a.path_length_m, b.path_length_m);
+  EXPECT_EQ(a.success, b.success);
+}
+
+TEST(Episode, GoalAbsentFromTheWorldEndsWithoutSuccess) {
+  Config cfg = testConfig();
+  cfg.episode.max_time_s = 60.0;
+  const EpisodeResult r = runEpisode(twoRoomSpec("frontier", "toilet"), cfg).result;
+  EXPECT_FALSE(r.success);
+  EXPECT_EQ(r.goal_instances, 0);
+  EXPECT_LT(r.shortest_path_m, 0.0);
+  EXPECT_EQ(r.spl, 0.0);
+  EXPECT_TRUE(r.end_reason == "explored" || r.end_reason == "time_budget") << r.end_reason;
+  EXPECT_EQ(r.collisions, 0);
+}
+
+TEST(Episode, RejectsUnknownPlannerAndEmptyGoal) {
+  const Config cfg = testConfig();
+  EXPECT_THROW(runEpisode(twoRoomSpec("greedy", "bed"), cfg), InputError);
+  EXPECT_THROW(runEpisode(twoRoomSpec("frontier", "  "), cfg), InputError);
+}
