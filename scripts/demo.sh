@@ -1,17 +1,22 @@
 #!/usr/bin/env bash
-# The default demo behind `make run`: generate an office floor, draw it, fly a lawnmower over it
-# with the LiDAR + depth camera, build the scene graph (rolling grid, coverage mask,
-# connectivity graph, objects) and write pictures and statistics into OUT_DIR.
+# The default demo behind `make run`: one ObjectNav episode in the built-in simulator. Generates
+# an apartment, draws it, and lets the UAV search it for a bed with the coarse-to-fine planner:
+# LiDAR + depth camera -> rolling grid, coverage mask, connectivity graph, regions, objects ->
+# frontiers and camera-unseen patches -> planner -> flight. Prints the result and writes
+# OUT_DIR/result.json, scene_graph.json, trajectory.csv, topdown.png and world.png.
 # Usage: scripts/demo.sh path/to/ussnav [OUT_DIR]
+# Environment: USSNAV_DEMO_GOAL (default bed), USSNAV_DEMO_PLANNER (default full).
 set -euo pipefail
 USSNAV=${1:?usage: demo.sh USSNAV [OUT_DIR]}
 OUT=${2:-out/demo}
-FRAMES=${USSNAV_DEMO_FRAMES:-900}
+GOAL=${USSNAV_DEMO_GOAL:-bed}
+PLANNER=${USSNAV_DEMO_PLANNER:-full}
 mkdir -p "$OUT"
 "$USSNAV" --version
-"$USSNAV" world generate --style office --seed 1 --out "$OUT/world.json"
+"$USSNAV" world generate --style apartment --seed 1 --rooms 8 --out "$OUT/world.json"
 "$USSNAV" world render "$OUT/world.json" --out "$OUT/world.png"
-"$USSNAV" world stats "$OUT/world.json"
-"$USSNAV" map --world "$OUT/world.json" --trajectory lawnmower --skeleton --max-frames "$FRAMES" --out "$OUT"
+"$USSNAV" world stats "$OUT/world.json" | head -4
+"$USSNAV" explore --world "$OUT/world.json" --goal "$GOAL" --planner "$PLANNER" --seed 1 --out "$OUT"
+"$USSNAV" graph stats "$OUT/scene_graph.json"
 echo
-echo "demo: results in $OUT/ (world.png, map.png, stats.json$( [ -f "$OUT/scene_graph.json" ] && echo ', scene_graph.json'))"
+echo "demo: results in $OUT/ (world.png, topdown.png, result.json, scene_graph.json, trajectory.csv)"

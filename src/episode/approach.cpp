@@ -16,7 +16,8 @@ std::vector<ApproachPose> approachPoses(const OccupancyMap& map, const GraphDist
   if (box.empty()) return out;
   const EpisodeConfig& ep = cfg.episode;
   const double reach = ep.found_radius - ep.found_margin;
-  const double clearance = cfg.sim.uav.radius + 0.05;
+  // The flight paths' clearance, or the narrower fallback when no pose keeps it (small rooms).
+  for (const double clearance : {ep.clearance, cfg.sim.uav.radius + 0.1}) {
   const double half_v = deg2rad(0.5 * cfg.sim.camera.vfov_deg - 5.0);
   const Vec3 c = box.center();
   const Vec3 half = 0.5 * box.size();
@@ -46,6 +47,8 @@ std::vector<ApproachPose> approachPoses(const OccupancyMap& map, const GraphDist
         out.push_back(ApproachPose{p, std::atan2(to.y(), to.x()), cost});
       }
     }
+  }
+    if (!out.empty()) break;
   }
   std::stable_sort(out.begin(), out.end(), [](const ApproachPose& a, const ApproachPose& b) { return a.cost_m < b.cost_m; });
   if (int(out.size()) > max_poses) out.resize(size_t(max_poses));

@@ -90,9 +90,12 @@ struct Blacklisted {
 };
 
 // Whether the first `horizon` metres of a polyline cross an inflated obstacle.
+// When the UAV itself stands inside the margin, the first segment is the escape step out of it
+// (flight_path.hpp) and is not judged.
 bool pathBlocked(const OccupancyMap& map, const std::vector<Vec3>& path, double horizon) {
   double walked = 0.0;
-  for (size_t i = 1; i < path.size() && walked < horizon; ++i) {
+  const size_t first = !path.empty() && map.stateAt(path[0]) == VoxelState::Occupied ? 2 : 1;
+  for (size_t i = first; i < path.size() && walked < horizon; ++i) {
     if (castRay(map, path[i - 1], path[i], false).blocked) return true;
     walked += (path[i] - path[i - 1]).norm();
   }
@@ -238,6 +241,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
           const auto p = flightPath(uav.pose().position, ap.position);
           if (!p) continue;
           approaching = true, approach_object = best->id, approach = ap;
+          approach.position = p->back();
           g = Goal{};
           g.active = true;
           g.path = *p;
@@ -336,11 +340,18 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
           const ExplorationTarget& tg = targets[size_t(choice.target)];
           const Viewpoint& vp = tg.viewpoints[size_t(choice.viewpoint)];
           const auto p = flightPath(uav.pose().position, vp.position);
+          if (p && std::getenv("USSNAV_DEBUG_EPISODE")) {
+            std::fprintf(stderr, "  plan -> %s (%.2f %.2f) vp (%.2f %.2f) path", toString(tg.kind), tg.centroid.x(),
+                         tg.centroid.y(), vp.position.x(), vp.position.y());
+            for (const Vec3& q : *p) std::fprintf(stderr, " (%.2f %.2f %.2f)", q.x(), q.y(), q.z());
+            std::fprintf(stderr, "\n");
+          }
           if (p) {
             g.active = true;
             g.kind = tg.kind;
             g.centroid = tg.centroid;
             g.vp = vp;
+            g.vp.position = p->back();  // the goal may have moved out of the clearance margin
             g.path = *p;
             g.patch_cells.clear();
             if (tg.kind == TargetKind::Unseen) g.patch_cells = patches[size_t(tg.source_id)].cells;

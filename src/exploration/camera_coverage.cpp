@@ -152,9 +152,11 @@ std::vector<UnseenPatch> CameraCoverage::patches() const {
     for (const Vec2i& c : p.cells) mean += centerOf(c).head<2>();
     mean /= double(p.cells.size());
     p.centroid = Vec3(mean.x(), mean.y(), z_);
-    // Viewpoints on three rings, yaw at the centroid.
+    // Viewpoints on three rings, yaw at the centroid. A level camera sees nothing of the floor
+    // layer closer than seen_below / tan(vfov / 2): those cells earn no gain.
     const double d0 = cfg_.unseen_view_distance;
-    for (double r : {0.5 * d0, d0, 1.5 * d0})
+    const double near = cfg_.seen_below / std::tan(0.5 * cfg_.sensor_vfov_deg * std::numbers::pi / 180.0);
+    for (double r : {d0, 1.5 * d0, 2.0 * d0})
       for (int a = 0; a < 16; ++a) {
         const double phi = a * std::numbers::pi / 8.0;
         const Vec2 pos = mean + r * Vec2(std::cos(phi), std::sin(phi));
@@ -165,10 +167,7 @@ std::vector<UnseenPatch> CameraCoverage::patches() const {
         for (const Vec2i& c : p.cells) {
           const Vec2 q = centerOf(c).head<2>() - pos;
           const double dist = q.norm();
-          if (dist > cfg_.seen_range || dist < 1e-6) {
-            if (dist < 1e-6) ++gain;
-            continue;
-          }
+          if (dist > cfg_.seen_range || dist < near) continue;
           double dphi = std::atan2(q.y(), q.x()) - yaw;
           dphi = std::remainder(dphi, 2.0 * std::numbers::pi);
           if (std::abs(dphi) > half_fov) continue;

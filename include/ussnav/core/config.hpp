@@ -257,7 +257,7 @@ struct ExplorationConfig {
                                     // this far below flight height, m
   int unseen_min_cells = 6;         // smaller unseen patches are no target
   double unseen_patch_size = 3.0;   // unseen patches are cut into tiles of this size, m
-  double unseen_view_distance = 1.5;// viewpoints this far (and half, and 1.5x) from a patch, m
+  double unseen_view_distance = 1.5;// viewpoints this far (and 1.5x, 2x) from a patch, m
   double unseen_clearance = 0.35;   // viewpoints need known free cells within this, m
   template <class V> void visit(V& v) {
     v.field("band_z_min", band_z_min, -100.0, 100.0, "m");

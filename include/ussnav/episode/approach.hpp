@@ -3,7 +3,8 @@
 // with it in view). Candidates around the mapped object's box — 24 directions, horizontal gaps
 // of 0.2..0.8 m from the box side, at flight height and up to 0.6 m lower — are kept when the
 // 3-D distance to the box is at most found_radius - found_margin, the pose is clear of
-// obstacles and unknown space by the UAV radius plus 0.05 m in the map, the box centre is inside
+// obstacles and unknown space by episode.clearance in the map (UAV radius + 0.1 m when no pose
+// keeps that), the box centre is inside
 // the camera's field of view facing it (5 degrees inside the vertical half-angle), and the
 // line of sight towards the box centre is not cut by an obstacle before reaching the box.
 // Ranked by graph distance from the UAV. Pure function of the map and graph.

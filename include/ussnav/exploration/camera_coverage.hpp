@@ -9,9 +9,10 @@
 // Known-but-unseen cells form UnseenPatch targets (4-connected, cut into unseen_patch_size
 // tiles, at least unseen_min_cells) with viewpoints like a frontier's: positions on three rings
 // around the patch on known free cells with unseen_clearance, yaw at the patch centroid, gain =
-// patch cells in the camera's field of view within seen_range and in 2-D line of sight through
-// known cells. Costs: updateKnown O(window cells in one slice), updateSeen O(pixels / stride^2
-// x ray cells), patches() O(unseen cells + patches x candidate positions x patch cells).
+// patch cells in the camera's field of view between seen_below / tan(vfov / 2) and seen_range
+// and in 2-D line of sight through known cells. Costs: updateKnown O(window cells in one
+// slice), updateSeen O(pixels / stride^2 x ray cells), patches() O(unseen cells + patches x
+// candidate positions x patch cells).
 
 #include <cstdint>
 #include <unordered_map>
