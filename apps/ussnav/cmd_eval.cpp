@@ -20,12 +20,14 @@
 #include "ussnav/eval/eval_report.hpp"
 #include "ussnav/eval/suite.hpp"
 #include "ussnav/perception/text_encoder.hpp"
+#include "ussnav/reasoning/instruction.hpp"
 
 namespace ussnav::cli {
 namespace {
 
 struct EvalArgs {
   std::string suite = "configs/suites/default.yaml", planners = "frontier,full", out = "out/eval";
+  std::string reasoner;
   int jobs = 0;
   bool fresh = false, save_episodes = false;
 };
@@ -50,6 +52,7 @@ void runEval(const EvalArgs& a) {
   const Suite suite = loadSuite(a.suite);
   Config cfg = cfg0;
   if (suite.max_time_s) cfg.episode.max_time_s = *suite.max_time_s;
+  if (!a.reasoner.empty()) cfg.reasoning.reasoner = a.reasoner;
   const std::vector<std::string> planners = splitList(a.planners);
   if (planners.empty()) throw InputError("--planners", "planners", "expected a comma-separated list, e.g. frontier,full");
   for (const auto& p : planners) makePlanner(p);  // unknown names fail here
@@ -57,6 +60,7 @@ void runEval(const EvalArgs& a) {
   // Worlds, and the goals each holds (a goal without an instance is skipped).
   std::vector<World> worlds;
   const std::shared_ptr<const TextEncoder> encoder(makeTextEncoder(cfg.perception));
+  const auto priors = CommonsensePriors::load(CommonsensePriors::defaultDir(), encoder);
   std::vector<Job> jobs;
   int skipped = 0;
   for (size_t i = 0; i < suite.worlds.size(); ++i) {
@@ -64,7 +68,9 @@ void runEval(const EvalArgs& a) {
     worlds.push_back(materializeWorld(suite.worlds[i]));
     const auto& goals = suite.worlds[i].goals.empty() ? suite.goals : suite.worlds[i].goals;
     for (const std::string& goal : goals) {
-      const GoalMatcher m(goal, encoder, cfg.episode.goal_similarity);
+      const Instruction ins = interpretInstruction(goal, *priors);
+      if (ins.targets.empty()) throw InputError(a.suite, "goals", "'" + goal + "' names no object to find");
+      const GoalMatcher m(goal, ins.targets, encoder, cfg.episode.goal_similarity);
       if (goalInstances(worlds.back(), m).empty()) {
         ++skipped;
         continue;
@@ -79,6 +85,16 @@ void runEval(const EvalArgs& a) {
   std::filesystem::create_directories(out);
   const std::filesystem::path csv = out / "episodes.csv";
   if (a.fresh) std::filesystem::remove(csv);
+  // The reasoner changes `full` episodes: refuse to resume rows made with another one.
+  const std::filesystem::path run_json = out / "run.json";
+  if (std::filesystem::exists(csv) && std::filesystem::exists(run_json)) {
+    const nlohmann::json prev = readJsonFile(run_json);
+    if (prev.value("reasoner", "") != cfg.reasoning.reasoner)
+      throw InputError(run_json.string(), "reasoner",
+                       "episodes in this folder used the '" + prev.value("reasoner", "") + "' reasoner, not '" +
+                           cfg.reasoning.reasoner + "'; pass --fresh or another --out");
+  }
+  writeJsonAtomic(run_json, {{"suite", a.suite}, {"reasoner", cfg.reasoning.reasoner}});
   int bad = 0;
   std::vector<EpisodeRow> rows = readEpisodesCsv(csv, &bad);
   std::set<std::string> done;
@@ -149,7 +165,7 @@ void runEval(const EvalArgs& a) {
   if (!first_error.empty()) throw std::runtime_error("episode failed: " + first_error + " (finished episodes are in " + csv.string() + "; re-run to resume)");
 
   writeJsonAtomic(out / "summary.json", summaryJson(rows));
-  const std::string md = summaryMarkdown(rows, "ussnav eval: " + suite.name);
+  const std::string md = summaryMarkdown(rows, "ussnav eval: " + suite.name + " (full: " + cfg.reasoning.reasoner + " reasoner)");
   writeFileAtomic(out / "summary.md", md);
   std::printf("%s", md.c_str());
   std::printf("wall %.0f s with %d jobs; wrote %s/episodes.csv, summary.json, summary.md\n", wall.ms() / 1000.0, n_jobs,
@@ -163,6 +179,8 @@ void addEvalCommand(CLI::App& root) {
   cmd->add_option("--suite", args.suite, "suite YAML (docs/eval.md)")->capture_default_str()->check(CLI::ExistingFile);
   cmd->add_option("--planners", args.planners, "comma-separated: frontier, tsp, full")->capture_default_str();
   cmd->add_option("--out", args.out, "output folder")->capture_default_str();
+  cmd->add_option("--reasoner", args.reasoner, "coarse level of `full`: builtin | llm (default: reasoning.reasoner)")
+      ->check(CLI::IsMember({"builtin", "llm"}));
   cmd->add_option("--jobs", args.jobs, "episodes run in parallel (default: min(2, cores))");
   cmd->add_flag("--fresh", args.fresh, "discard DIR/episodes.csv instead of resuming");
   cmd->add_flag("--save-episodes", args.save_episodes, "also write each episode's result, graph and pictures under DIR/episodes/");

@@ -13,7 +13,7 @@ namespace ussnav::cli {
 namespace {
 
 struct ExploreArgs {
-  std::string world, goal, planner = "full", out = "out/explore";
+  std::string world, goal, planner = "full", out = "out/explore", reasoner;
   uint64_t seed = 1;
   double max_time = 0.0;
 };
@@ -22,6 +22,7 @@ void runExplore(const ExploreArgs& a) {
   const Config& cfg0 = globals().config();
   Config cfg = cfg0;
   if (a.max_time > 0) cfg.episode.max_time_s = a.max_time;
+  if (!a.reasoner.empty()) cfg.reasoning.reasoner = a.reasoner;
   EpisodeSpec spec;
   spec.world = loadWorld(a.world);
   spec.world_name = a.world;
@@ -47,6 +48,15 @@ void runExplore(const ExploreArgs& a) {
               r.success ? "SUCCESS" : "FAILURE", r.end_reason.c_str(), r.spl, r.path_length_m,
               r.shortest_path_m >= 0 ? std::to_string(r.shortest_path_m).substr(0, 5).c_str() : "n/a", r.time_s, r.frames,
               r.collisions);
+  if (r.reasoning.contains("targets")) {
+    std::printf("  instruction: targets %s%s (%s)", r.reasoning["targets"].dump().c_str(),
+                r.reasoning.value("room", "").empty() ? "" : (" in the " + r.reasoning.value("room", "")).c_str(),
+                r.reasoning.value("interpreted", "").c_str());
+    if (r.reasoning.contains("decisions"))
+      std::printf("; %s reasoner: %d decisions, %d fallbacks", r.reasoning.value("reasoner", "").c_str(),
+                  r.reasoning.value("decisions", 0), r.reasoning.value("fallbacks", 0));
+    std::printf("\n");
+  }
   if (r.found_object)
     std::printf("  declared object %d \"%s\" at (%.2f, %.2f, %.2f)\n", r.found_object->id, r.found_object->label.c_str(),
                 r.found_object->position.x(), r.found_object->position.y(), r.found_object->position.z());
@@ -65,8 +75,12 @@ void addExploreCommand(CLI::App& root) {
   auto* cmd = root.add_subcommand("explore", "Run one ObjectNav episode: explore a world until the goal object is found");
   cmd->fallthrough();
   cmd->add_option("--world", args.world, "world JSON (ussnav world generate/import)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--goal", args.goal, "object category to find, e.g. \"bed\"")->required();
+  cmd->add_option("--goal", args.goal,
+                  "what to find, in free text: \"bed\", \"somewhere to sleep\", \"the sofa in the living room\"")
+      ->required();
   cmd->add_option("--planner", args.planner, "full | frontier | tsp")->capture_default_str();
+  cmd->add_option("--reasoner", args.reasoner, "coarse level of `full`: builtin | llm (default: reasoning.reasoner)")
+      ->check(CLI::IsMember({"builtin", "llm"}));
   cmd->add_option("--seed", args.seed, "seed for sensor noise and the detector")->capture_default_str();
   cmd->add_option("--max-time", args.max_time, "time budget in simulated seconds (default: episode.max_time_s)");
   cmd->add_option("--out", args.out, "output folder")->capture_default_str();

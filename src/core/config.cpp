@@ -39,6 +39,10 @@ class YamlReader {
     YAML::Node n = take(key);
     if (n) value = convert<bool>(n, key);
   }
+  void text(const char* key, std::string& value, const char* /*doc*/) {
+    YAML::Node n = take(key);
+    if (n) value = convert<std::string>(n, key);
+  }
   void choice(const char* key, std::string& value, const std::vector<std::string>& options) {
     YAML::Node n = take(key);
     if (!n) return;
@@ -112,6 +116,9 @@ class YamlWriter {
   void field(const char* key, bool& value) { out_ << YAML::Key << key << YAML::Value << value; }
   void choice(const char* key, std::string& value, const std::vector<std::string>&) {
     out_ << YAML::Key << key << YAML::Value << value;
+  }
+  void text(const char* key, std::string& value, const char*) {
+    out_ << YAML::Key << key << YAML::Value << YAML::DoubleQuoted << value;
   }
   template <class S>
   void section(const char* key, S& sub) {

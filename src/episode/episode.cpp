@@ -6,11 +6,12 @@
 #include <cstdlib>
 #include <map>
 
+#include "ussnav/core/error.hpp"
 #include "ussnav/core/timing.hpp"
 #include "ussnav/episode/approach.hpp"
-#include "ussnav/episode/goal.hpp"
 #include "ussnav/episode/episode_drawing.hpp"
 #include "ussnav/episode/flight_path.hpp"
+#include "ussnav/episode/goal.hpp"
 #include "ussnav/eval/metrics.hpp"
 #include "ussnav/exploration/camera_coverage.hpp"
 #include "ussnav/exploration/frontier.hpp"
@@ -18,6 +19,9 @@
 #include "ussnav/mapping/inflated_map.hpp"
 #include "ussnav/perception/oracle_detector.hpp"
 #include "ussnav/pipeline/mapper.hpp"
+#include "ussnav/reasoning/coarse_decider.hpp"
+#include "ussnav/reasoning/instruction.hpp"
+#include "ussnav/reasoning/region_labeler.hpp"
 #include "ussnav/sim/simulator.hpp"
 #include "ussnav/sim/uav.hpp"
 #include "ussnav/skeleton/graph_search.hpp"
@@ -33,10 +37,11 @@ struct GroundTruthGoal {
   bool multi_room = false;
 };
 
-GroundTruthGoal evaluateGoal(const Simulator& sim, const GoalMatcher& goal, const Pose& start, double found_radius) {
+GroundTruthGoal evaluateGoal(const Simulator& sim, const GoalMatcher& goal, const Pose& start, double found_radius,
+                             const std::function<bool(const std::string&)>& in_room) {
   GroundTruthGoal g;
   const World& w = sim.world();
-  g.instances = goalInstances(w, goal);
+  g.instances = goalInstances(w, goal, in_room);
   if (g.instances.empty()) return g;
   const GtPlanner& planner = sim.planner();
   // Success poses: free cells within found_radius of a goal instance's box (approach poses may
@@ -114,12 +119,34 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
   R.planner = spec.planner;
   R.seed = spec.seed;
 
-  std::unique_ptr<ExplorationPlanner> planner = makePlanner(spec.planner, spec.coarse);
+  // The instruction and the coarse level (reasoning/): free text -> target categories and an
+  // optional room; the `full` planner asks the configured reasoner which region to search.
+  const std::shared_ptr<const TextEncoder> encoder(makeTextEncoder(cfg.perception));
+  const auto priors = CommonsensePriors::load(CommonsensePriors::defaultDir(), encoder);
+  const Instruction instruction = interpretInstruction(spec.goal, *priors);
+  if (instruction.targets.empty())
+    throw InputError("goal", "", "'" + spec.goal + "' names a room but no object; ussnav goto flies to rooms");
+  const int goal_room = instruction.room.empty() ? -1 : priors->roomIndex(instruction.room);
+  std::shared_ptr<Reasoner> reasoner;
+  std::unique_ptr<RegionLabeler> labeler;
+  std::unique_ptr<CoarseDecider> decider;
+  RegionChooser coarse = spec.coarse;
+  if ((spec.planner == "full" && !coarse) || goal_room >= 0) {
+    reasoner = makeReasoner(cfg.reasoning, priors);
+    labeler = std::make_unique<RegionLabeler>(reasoner, cfg.reasoning.label_min_interval_s, cfg.reasoning.label_queue,
+                                              reasoner->name() != "builtin");
+    if (spec.planner == "full" && !coarse) {
+      decider = std::make_unique<CoarseDecider>(reasoner, priors, instruction, cfg.reasoning);
+      coarse = decider->chooser();
+    }
+  }
+  std::unique_ptr<ExplorationPlanner> planner = makePlanner(spec.planner, coarse);
   Simulator sim(spec.world, cfg, spec.seed);
   const Pose start = spec.start ? *spec.start : sim.startPose();
-  const std::shared_ptr<const TextEncoder> encoder(makeTextEncoder(cfg.perception));
-  const GoalMatcher goal(spec.goal, encoder, ep.goal_similarity);
-  const GroundTruthGoal truth = evaluateGoal(sim, goal, start, ep.found_radius);
+  const GoalMatcher goal(spec.goal, instruction.targets, encoder, ep.goal_similarity);
+  std::function<bool(const std::string&)> gt_in_room;
+  if (goal_room >= 0) gt_in_room = [&](const std::string& type) { return priors->roomIndex(type) == goal_room; };
+  const GroundTruthGoal truth = evaluateGoal(sim, goal, start, ep.found_radius, gt_in_room);
   R.goal_instances = int(truth.instances.size());
   R.shortest_path_m = truth.shortest_path;
   R.multi_room = truth.multi_room;
@@ -183,6 +210,29 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
                        [&](const Blacklisted& b) { return b.until > t && (b.centroid - c).norm() < 0.75; });
   };
 
+  // Region semantics from a scene-graph snapshot (only when a reasoner is in use).
+  std::vector<RegionSummary> summaries;
+  SceneGraph snapshot;
+  double semantics_t = -1e9;
+  auto refreshSemantics = [&] {
+    if (!labeler || semantics_t == t) return;
+    const Stopwatch sw;
+    semantics_t = t;
+    snapshot = buildSceneGraph(mapper, t);
+    summaries = summarizeRegions(snapshot);
+    labeler->offer(summaries, t);
+    if (decider) decider->setScene(summaries, labeler->semantics());
+    times.add("semantics", sw.ms());
+  };
+  // Room constraint: the reasoner's label of the region holding the object must name the room.
+  auto inGoalRoom = [&](const MappedObject& o) {
+    if (goal_room < 0) return true;
+    refreshSemantics();
+    const auto sem = labeler->semantics();
+    const auto it = sem.find(regionAt(snapshot, o.centroid));
+    return it != sem.end() && priors->roomIndex(it->second.label) == goal_room;
+  };
+
   while (true) {
     SensedFrame f = sim.sense(uav.pose(), t);
     const MapperFrameReport rep = mapper.process(MapperFrame{f.pose, f.scan ? &*f.scan : nullptr, &f.depth, t});
@@ -231,6 +281,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
         if (!o.confirmed || o.n_observations < ep.target_min_observations || !goal.matches(o.label)) continue;
         auto it = failed_objects.find(o.id);
         if (it != failed_objects.end() && it->second > t) continue;
+        if (!inGoalRoom(o)) continue;
         const double d = (o.centroid - uav.pose().position).norm();
         if (d < best_d) best_d = d, best = &o;
       }
@@ -322,6 +373,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
           const int node = mapper.anchorNode(tg.viewpoints.front().position);
           tg.region = node >= 0 ? mapper.regions().regionOf(node) : -1;
         }
+        if (decider) refreshSemantics();
         g.active = false;
         uav.setPath({});  // hover unless a new path is found below
         while (!targets.empty() && graph.size() > 0) {
@@ -462,6 +514,21 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
   const double med = times.median("frame_update");
   R.update_hz = med > 0 ? 1000.0 / med : 0.0;
   run.graph = buildSceneGraph(mapper, t, spec.world_name);
+  R.reasoning = {{"instruction", instruction.text}, {"targets", instruction.targets}, {"room", instruction.room},
+                 {"interpreted", instruction.how}};
+  if (decider) R.reasoning.update(decider->report());
+  if (labeler) {
+    labeler->offer(summarizeRegions(run.graph), 1e18);  // label the final regions too
+    labeler->drain();
+    const auto ls = labeler->stats();
+    R.reasoning["reasoner"] = reasoner->name();
+    R.reasoning["labels"] = {{"requests", ls.requests}, {"cache_hits", ls.cache_hits}, {"dropped", ls.dropped},
+                             {"fallbacks", ls.fallbacks}, {"label_ms", latencySummary(ls.latency_ms)}};
+    const auto sem = labeler->semantics();
+    for (SgRegion& r : run.graph.regions)
+      if (auto it = sem.find(r.id); it != sem.end()) r.label = it->second.label, r.description = it->second.description;
+  }
+  R.reasoner_fallbacks = decider ? decider->stats().fallbacks : 0;
   run.topdown = drawEpisode(spec.world, run, camera, truth.instances, start);
   R.wall_s = wall.ms() / 1000.0;
   return run;

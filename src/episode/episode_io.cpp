@@ -34,6 +34,8 @@ nlohmann::json toJson(const EpisodeResult& r) {
   j["unreachable_targets"] = r.unreachable;
   j["update_hz"] = r.update_hz;
   j["stage_ms"] = r.stage_ms;
+  j["reasoning"] = r.reasoning;
+  j["reasoner_fallbacks"] = r.reasoner_fallbacks;
   nlohmann::json cov = nlohmann::json::array();
   for (const CoverageSample& c : r.coverage) cov.push_back({{"t", c.t}, {"known_m2", c.known_m2}, {"camera_seen_m2", c.camera_seen_m2}});
   j["coverage"] = cov;

@@ -22,6 +22,16 @@ GoalMatcher::GoalMatcher(std::string goal, std::shared_ptr<const TextEncoder> en
     : goal_(normalise(std::move(goal))), encoder_(std::move(encoder)), threshold_(threshold) {
   if (goal_.empty()) throw InputError("goal", "goal", "an object category is required, e.g. \"bed\"");
   if (!encoder_) throw InputError("goal", "encoder", "a text encoder is required");
+  targets_.push_back(goal_);
+}
+
+GoalMatcher::GoalMatcher(std::string goal, std::vector<std::string> targets, std::shared_ptr<const TextEncoder> encoder,
+                         double threshold)
+    : goal_(normalise(std::move(goal))), encoder_(std::move(encoder)), threshold_(threshold) {
+  for (auto& t : targets)
+    if (!normalise(t).empty()) targets_.push_back(normalise(t));
+  if (targets_.empty()) throw InputError("goal", "goal", "'" + goal_ + "' names no object category to look for");
+  if (!encoder_) throw InputError("goal", "encoder", "a text encoder is required");
 }
 
 double GoalMatcher::similarity(const std::string& label) const {
@@ -29,17 +39,25 @@ double GoalMatcher::similarity(const std::string& label) const {
   std::lock_guard<std::mutex> lock(mutex_);
   auto it = cache_.find(l);
   if (it != cache_.end()) return it->second;
-  const double s = l == goal_ ? 1.0 : encoder_->similarity(goal_, l);
+  double s = 0.0;
+  for (const auto& t : targets_) s = std::max(s, l == t ? 1.0 : encoder_->similarity(t, l));
   cache_.emplace(l, s);
   return s;
 }
 
 bool GoalMatcher::matches(const std::string& label) const { return similarity(label) >= threshold_; }
 
-std::vector<const Object*> goalInstances(const World& world, const GoalMatcher& goal) {
+std::vector<const Object*> goalInstances(const World& world, const GoalMatcher& goal,
+                                         const std::function<bool(const std::string&)>& in_room) {
   std::vector<const Object*> out;
-  for (const Object& o : world.objects)
-    if (goal.matches(o.category)) out.push_back(&o);
+  for (const Object& o : world.objects) {
+    if (!goal.matches(o.category)) continue;
+    if (in_room) {
+      const auto r = std::find_if(world.rooms.begin(), world.rooms.end(), [&](const Room& x) { return x.id == o.room_id; });
+      if (r == world.rooms.end() || !in_room(r->type)) continue;
+    }
+    out.push_back(&o);
+  }
   return out;
 }
 

@@ -319,6 +319,51 @@ struct EpisodeConfig {
   }
 };
 
+// An OpenAI-compatible chat-completions endpoint (reasoning.reasoner: llm). Works with Qwen's
+// API (base_url https://dashscope.aliyuncs.com/compatible-mode/v1) and local servers (vLLM,
+// Ollama, llama.cpp: http://127.0.0.1:PORT/v1). The key is read from the environment variable
+// named by api_key_env at run time, never from a file.
+struct LlmConfig {
+  std::string base_url = "http://127.0.0.1:8000/v1";
+  std::string model = "qwen3-8b";
+  std::string api_key_env = "USSNAV_LLM_API_KEY";
+  double timeout_s = 20.0;          // per attempt (connect + read)
+  int retries = 2;                  // extra attempts after a timeout, 429, 5xx or network error
+  double backoff_s = 0.5;           // wait before retry k: backoff_s * 2^(k-1) (429: Retry-After if larger)
+  double temperature = 0.0;
+  int max_tokens = 512;
+  bool json_mode = true;            // request response_format {"type": "json_object"}
+  template <class V> void visit(V& v) {
+    v.text("base_url", base_url, "http(s)://host[:port]/prefix, /chat/completions is appended");
+    v.text("model", model, "model name sent to the server");
+    v.text("api_key_env", api_key_env, "environment variable holding the key (may be unset)");
+    v.field("timeout_s", timeout_s, 0.05, 600.0, "s");
+    v.field("retries", retries, 0, 10, "attempts");
+    v.field("backoff_s", backoff_s, 0.0, 60.0, "s");
+    v.field("temperature", temperature, 0.0, 2.0, "");
+    v.field("max_tokens", max_tokens, 16, 32768, "tokens");
+    v.field("json_mode", json_mode);
+  }
+};
+
+// Coarse-level reasoning (paper Sec. V-B): region semantics and the region to search.
+struct ReasoningConfig {
+  std::string reasoner = "builtin";   // builtin (offline commonsense) | llm
+  std::string prompts_dir = "";       // "" = the repository's prompts/
+  double label_min_interval_s = 2.0;  // a region is re-labelled at most this often (sim time), s
+  int label_queue = 16;               // pending region-label requests; older ones are dropped
+  double decision_min_interval_s = 0.0;  // coarse decisions at most this often; 0 = every re-plan
+  LlmConfig llm;
+  template <class V> void visit(V& v) {
+    v.choice("reasoner", reasoner, {"builtin", "llm"});
+    v.text("prompts_dir", prompts_dir, "folder with the prompt files; empty = repository prompts/");
+    v.field("label_min_interval_s", label_min_interval_s, 0.0, 1e4, "s");
+    v.field("label_queue", label_queue, 1, 10000, "requests");
+    v.field("decision_min_interval_s", decision_min_interval_s, 0.0, 1e4, "s");
+    v.section("llm", llm);
+  }
+};
+
 struct Config {
   SimConfig sim;
   MappingConfig mapping;
@@ -328,6 +373,7 @@ struct Config {
   RegionsConfig regions;
   ExplorationConfig exploration;
   EpisodeConfig episode;
+  ReasoningConfig reasoning;
   template <class V> void visit(V& v) {
     v.section("sim", sim);
     v.section("mapping", mapping);
@@ -337,6 +383,7 @@ struct Config {
     v.section("regions", regions);
     v.section("exploration", exploration);
     v.section("episode", episode);
+    v.section("reasoning", reasoning);
   }
 };
 

@@ -29,7 +29,7 @@ namespace ussnav {
 struct EpisodeSpec {
   World world;
   std::string world_name;          // for reports
-  std::string goal;                // object category in free text
+  std::string goal;                // instruction in free text: "bed", "somewhere to sleep", ...
   std::string planner = "frontier";
   uint64_t seed = 1;
   std::optional<Pose> start;       // default: the world's start pose (moved to free space)
@@ -71,6 +71,8 @@ struct EpisodeResult {
   double update_hz = 0.0;          // 1000 / median per-frame scene-graph update (ms)
   nlohmann::json stage_ms;         // {stage: {median, p95, count}}
   std::vector<CoverageSample> coverage;  // every 5 s
+  nlohmann::json reasoning = nlohmann::json::object();  // instruction, reasoner decisions, faults
+  int reasoner_fallbacks = 0;      // coarse decisions answered by global utility after a fault
   double wall_s = 0.0;
 };
 

@@ -5,6 +5,7 @@
 // (which mapped object is the target?) and the evaluation (which ground-truth instances are?).
 // Matching is cached per label; thread-safe for concurrent const use once built.
 
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -22,19 +23,26 @@ class GoalMatcher {
  public:
   // Throws InputError (file "goal") on an empty goal.
   GoalMatcher(std::string goal, std::shared_ptr<const TextEncoder> encoder, double threshold);
+  // An instruction's categories (reasoning/instruction.hpp): a label matches when it is within
+  // `threshold` of any of them; `goal` is the instruction text, for reports.
+  GoalMatcher(std::string goal, std::vector<std::string> targets, std::shared_ptr<const TextEncoder> encoder,
+              double threshold);
   bool matches(const std::string& label) const;
   double similarity(const std::string& label) const;
   const std::string& goal() const { return goal_; }
 
  private:
   std::string goal_;
+  std::vector<std::string> targets_;
   std::shared_ptr<const TextEncoder> encoder_;
   double threshold_;
   mutable std::mutex mutex_;
   mutable std::unordered_map<std::string, double> cache_;
 };
 
-// Ground-truth instances of the goal in `world` (evaluation only).
-std::vector<const Object*> goalInstances(const World& world, const GoalMatcher& goal);
+// Ground-truth instances of the goal in `world` (evaluation only); with `in_room` (a predicate
+// on the ground-truth room type) only those inside a room it accepts.
+std::vector<const Object*> goalInstances(const World& world, const GoalMatcher& goal,
+                                         const std::function<bool(const std::string&)>& in_room = {});
 
 }  // namespace ussnav

@@ -1,0 +1,36 @@
+#pragma once
+// The offline reasoner (reasoner.hpp, `builtin`). With P(room | object) from the priors:
+//  - a region's room distribution is the mean of its objects' rows mixed with a uniform share
+//    (weight 0.5), its label the most likely room, its confidence 1 - exp(-n / 2) for n objects
+//    with a prior; no such object: "hallway" when the region is elongated (>= 3:1), else unknown;
+//  - the target's affinity A(room) = max over the instruction's targets of P(room | target),
+//    scaled to max 1; a room constraint multiplies other rooms by 0.05;
+//  - a region's chance s = conf * sum_k P(k | region) A(k) + (1 - conf) * mean_k A(k), and 1 when
+//    it already holds an object matching a target; 0.5 everywhere when no target has a prior;
+//  - the choice maximises (s + 0.02) * frontier gain / max(cost, 1 s), the current region's
+//    value x 1.5 (stay unless another region is clearly better). Without any semantics every s
+//    is equal and this is the global-utility choice.
+
+#include <memory>
+
+#include "ussnav/reasoning/reasoner.hpp"
+
+namespace ussnav {
+
+class BuiltinReasoner : public Reasoner {
+ public:
+  explicit BuiltinReasoner(std::shared_ptr<const CommonsensePriors> priors);
+  std::string name() const override { return "builtin"; }
+  RegionSemantics labelRegion(const RegionSummary& region) override;
+  CoarseDecision chooseRegion(const CoarseQuery& query) override;
+
+  // P(room type) of a set of object labels (size priors.rooms()); `known` = labels with a prior.
+  std::vector<double> roomDistribution(const std::vector<std::string>& labels, int* known = nullptr) const;
+  // The chance s above for one region of the query.
+  double targetChance(const CoarseQuery& q, const RegionState& r) const;
+
+ private:
+  std::shared_ptr<const CommonsensePriors> priors_;
+};
+
+}  // namespace ussnav

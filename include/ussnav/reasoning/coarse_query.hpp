@@ -1,0 +1,60 @@
+#pragma once
+// The coarse decision (paper Sec. V-B): "which region should the UAV search next?". A
+// CoarseQuery holds what the reasoner may know, all from the scene graph and the planner: the
+// instruction, the current region, the visit history, every region's label, description,
+// adjacency and objects, the frontiers (count and gain) and travel cost per region, and the
+// room-adjacency prior. toJson() is the documented schema (docs/reasoning.md) sent to the LLM.
+// A reply is {"region": ID, "reason": "..."}; parseCoarseReply() validates it: malformed JSON,
+// an unknown region id, or a region without frontiers are faults, and the caller falls back to
+// the global-utility choice and counts the fault.
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "ussnav/reasoning/instruction.hpp"
+
+namespace ussnav {
+
+struct RegionState {
+  int id = -1;
+  std::string label, description;   // "" until labelled
+  double label_confidence = 0.0;
+  std::vector<int> adjacent;
+  std::vector<std::string> objects; // labels
+  int frontiers = 0;                // exploration targets in it
+  double gain = 0.0;                // their summed gain
+  double cost_s = -1.0;             // to its cheapest target, s; -1 = no target
+  double distance_m = -1.0;         // path length to it, m; -1 = no target
+  int visits = 0;                   // times the UAV entered it
+};
+
+struct CoarseQuery {
+  Instruction instruction;
+  int current_region = -1;
+  std::vector<int> history;         // regions entered, oldest first (last 20)
+  std::vector<RegionState> regions; // ascending id; the candidates have frontiers > 0
+  struct Adjacent {
+    std::string a, b;
+    double weight = 0.0;
+  };
+  std::vector<Adjacent> room_adjacency;  // the prior (room_adjacency.tsv)
+  const RegionState* find(int id) const;
+};
+
+struct CoarseDecision {
+  int region = -1;
+  std::string reason;
+  std::string fault;                // "" = valid; else malformed | unknown_region | no_frontiers | llm_<status>
+  double latency_ms = 0.0;
+};
+
+nlohmann::json toJson(const CoarseQuery& q);
+// Validates a reasoner's reply text (a JSON object, possibly inside ``` fences or after prose).
+CoarseDecision parseCoarseReply(const std::string& text, const CoarseQuery& q);
+// The first {...} JSON object in `text` (code fences and surrounding prose ignored); throws
+// nlohmann::json::exception when there is none.
+nlohmann::json extractJsonObject(const std::string& text);
+
+}  // namespace ussnav

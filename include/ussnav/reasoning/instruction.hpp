@@ -1,0 +1,42 @@
+#pragma once
+// Free-text instructions -> what would satisfy them (paper Sec. V-B, "zero-shot"): "bed",
+// "find a bed", "somewhere to sleep", "the sofa in the living room", "I want to attend a
+// meeting". Offline, from WordNet and the commonsense priors, no model:
+//  1. a room phrase naming a room type or alias of room_types.tsv ("in the living room") becomes
+//     the room constraint;
+//  2. a named object: the longest word n-gram that WordNet knows as a physical thing (artifact,
+//     plant, object, food) or that matches a category of the priors by text cosine -> targets;
+//  3. otherwise a functional request: the content words (stemmed, filler words dropped) are
+//     looked up in each candidate category's name, synonyms and WordNet gloss ("bed: a piece of
+//     furniture that provides a place to sleep": 2 for a name, 1.5 for a purpose "to / for W",
+//     1 for a mention); the best-scoring categories become the
+//     targets, the best-scoring room type a hint;
+//  4. nothing recognised: the content words themselves are the target (an unknown label can
+//     still be matched by the text encoder).
+// Candidate categories: the priors' tables plus `extra_vocabulary` (e.g. labels in a scene graph).
+
+#include <string>
+#include <vector>
+
+#include "ussnav/reasoning/priors.hpp"
+
+namespace ussnav {
+
+struct Instruction {
+  std::string text;                  // as given
+  std::vector<std::string> targets;  // object categories that satisfy it, best first
+  std::string room;                  // required room type, "" = anywhere
+  std::string room_hint;             // room type a functional request points at, "" = none
+  std::string how;                   // named | functional | literal | room_only
+};
+
+// Throws InputError (file "goal") on an empty or all-filler instruction.
+Instruction interpretInstruction(const std::string& text, const CommonsensePriors& priors,
+                                 const std::vector<std::string>& extra_vocabulary = {});
+
+// Lower-cased words of a text, punctuation dropped.
+std::vector<std::string> instructionWords(const std::string& text);
+// Crude suffix stemmer shared by both sides of a gloss match ("sleeping" -> "sleep").
+std::string stemWord(const std::string& w);
+
+}  // namespace ussnav

@@ -1,0 +1,79 @@
+#pragma once
+// Commonsense priors of the built-in reasoner (paper Sec. V-B stand-in for the LLM's world
+// knowledge), read from independent published tables copied into data/priors/ (its README
+// credits them; none comes from this project's world generator):
+//  - ProcTHOR's human-annotated placement weights (0 never / 1 possible / 2 likely) of 109 object
+//    types in kitchens, living rooms, bedrooms and bathrooms: likelihoods 0.03 / 0.35 / 1;
+//  - SG-Nav's object-room co-occurrence scores (21 MP3D goal categories x 9 room types), read as
+//    log-likelihoods: exp(score);
+//  - MP3D's mpcat40 table (MIT): the NYU40 classes and raw labels each SG-Nav category covers,
+//    as aliases (tv_monitor: television; chest_of_drawers: dresser, night stand);
+//  - room_types.tsv (the room types, aliases, which table column means each) and
+//    room_adjacency.tsv (which room types open onto each other), written for this project.
+// P(room | object label): the label is matched to every table category by the text encoder
+// (cosine >= match_cosine; "couch" -> Sofa, "tv" -> tv_monitor by its alias television; failing
+// that, the nearest categories within cosine 0.6 at half weight: "refrigerator" -> Fridge); each matching
+// row is normalised over the rooms its table covers, and the rows are averaged. Rows that say
+// nothing (all zero) are skipped. A label matching no category has no prior (empty vector).
+// Thread-safe for const use; roomsGivenObject() caches per label.
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "ussnav/perception/text_encoder.hpp"
+
+namespace ussnav {
+
+struct RoomType {
+  std::string name;                  // "living room"
+  std::vector<std::string> aliases;  // "family room", ...
+  std::string description;           // one line
+};
+
+class CommonsensePriors {
+ public:
+  // Reads dir/{room_types.tsv, room_adjacency.tsv, procthor_object_room_weights.tsv,
+  // sgnav_object_room_cooccurrence.csv, mpcat40.tsv}. Throws InputError naming the file and line/field on a
+  // missing file or a malformed row.
+  static std::shared_ptr<const CommonsensePriors> load(const std::filesystem::path& dir, std::shared_ptr<const TextEncoder> encoder,
+                                                         double match_cosine = 0.85);
+  // The repository's data/priors (next to configs/), or empty when not found.
+  static std::filesystem::path defaultDir();
+
+  const std::vector<RoomType>& rooms() const { return rooms_; }
+  // Index of a room type by name or alias (case-insensitive, then by text cosine >= match_cosine);
+  // -1 when none.
+  int roomIndex(const std::string& name) const;
+  // P(room | an object with this label), size rooms(); empty when the label matches no category.
+  std::vector<double> roomsGivenObject(const std::string& label) const;
+  // Room adjacency prior in [0, 1] (listed pairs, else 0.1).
+  double adjacency(int a, int b) const;
+  // The tables' object categories as words ("ArmChair" -> "arm chair"), for instructions.
+  const std::vector<std::string>& categories() const { return categories_; }
+  const TextEncoder& encoder() const { return *encoder_; }
+  std::shared_ptr<const TextEncoder> encoderPtr() const { return encoder_; }
+
+ private:
+  struct Row {
+    std::string category;          // as words
+    std::vector<std::string> names;  // category and its aliases (mpcat40), matched against labels
+    std::vector<double> p;         // over rooms_, sums to 1
+  };
+  std::vector<RoomType> rooms_;
+  std::vector<std::vector<double>> adjacency_;
+  std::vector<Row> rows_;
+  std::vector<std::string> categories_;
+  std::shared_ptr<const TextEncoder> encoder_;
+  double match_cosine_ = 0.85;
+  mutable std::mutex mutex_;
+  mutable std::map<std::string, std::vector<double>> cache_;
+};
+
+// "ArmChair" -> "arm chair", "tv_monitor" -> "tv monitor", "TVStand" -> "tv stand".
+std::string categoryWords(const std::string& name);
+
+}  // namespace ussnav

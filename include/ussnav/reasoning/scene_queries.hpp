@@ -1,0 +1,45 @@
+#pragma once
+// Extended capabilities on a saved scene graph (paper Sec. VI-B-3), no exploration:
+//  - pickRegionForRequest: which region serves a request ("I want to attend a meeting"): a
+//    region holding an object that matches the instruction's targets scores 1 (nearest such
+//    object is the goal), else the builtin chance that it holds one, with a bonus when its label
+//    names the required room or the request's room hint;
+//  - routeOnSceneGraph: a polyline from a point to another over the graph's nodes and edges
+//    (Dijkstra on centroid distances; start and goal join their nearest nodes);
+//  - answerQuestion: a short text answer about the graph: the area at a point ("describe the
+//    current area"), where objects of a kind are ("where is the bed?"), or the layout.
+// Only the scene graph is read, never ground truth.
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ussnav/reasoning/instruction.hpp"
+#include "ussnav/reasoning/region_semantics.hpp"
+
+namespace ussnav {
+
+class Reasoner;
+
+// Region labels of a saved graph: those it carries, the others from `reasoner` (may be null).
+std::map<int, RegionSemantics> graphSemantics(const SceneGraph& g, Reasoner* reasoner);
+// Every object label in the graph (extra vocabulary for instructions).
+std::vector<std::string> graphVocabulary(const SceneGraph& g);
+
+struct RegionPick {
+  int region = -1;     // -1: the graph has no region
+  double score = 0.0;
+  int object = -1;     // matching object, -1 none
+  Vec3 goal = Vec3::Zero();  // where to fly: the object, else the region's node nearest its centroid
+  std::string reason;
+};
+RegionPick pickRegionForRequest(const SceneGraph& g, const Instruction& ins, const std::map<int, RegionSemantics>& sem,
+                                const CommonsensePriors& priors, double goal_similarity = 0.85);
+
+std::optional<std::vector<Vec3>> routeOnSceneGraph(const SceneGraph& g, const Vec3& from, const Vec3& to);
+
+std::string answerQuestion(const SceneGraph& g, const std::string& question, const std::optional<Vec3>& at,
+                           const std::map<int, RegionSemantics>& sem, const CommonsensePriors& priors);
+
+}  // namespace ussnav

@@ -1,0 +1,146 @@
+// The offline commonsense reasoner (see builtin_reasoner.hpp).
+
+#include "ussnav/reasoning/builtin_reasoner.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace ussnav {
+namespace {
+
+constexpr double kUniformWeight = 0.5;  // mixed into a region's room distribution
+constexpr double kOtherRoom = 0.05;     // affinity factor of rooms that break a room constraint
+constexpr double kStay = 1.5;           // value factor of the current region
+constexpr double kHallwayElongation = 3.0;
+
+std::string article(const std::string& w) {
+  return (!w.empty() && std::string("aeiou").find(w[0]) != std::string::npos ? "an " : "a ") + w;
+}
+
+}  // namespace
+
+BuiltinReasoner::BuiltinReasoner(std::shared_ptr<const CommonsensePriors> priors) : priors_(std::move(priors)) {}
+
+std::vector<double> BuiltinReasoner::roomDistribution(const std::vector<std::string>& labels, int* known) const {
+  const size_t R = priors_->rooms().size();
+  std::vector<double> p(R, 0.0);
+  int n = 0;
+  for (const auto& l : labels) {
+    const auto row = priors_->roomsGivenObject(l);
+    if (row.empty()) continue;
+    for (size_t k = 0; k < R; ++k) p[k] += row[k];
+    ++n;
+  }
+  if (known) *known = n;
+  double s = 0.0;
+  for (size_t k = 0; k < R; ++k) {
+    p[k] = (n > 0 ? p[k] / n : 0.0) + kUniformWeight / double(R);
+    s += p[k];
+  }
+  for (double& x : p) x /= s;
+  return p;
+}
+
+RegionSemantics BuiltinReasoner::labelRegion(const RegionSummary& region) {
+  RegionSemantics s;
+  s.source = name();
+  s.key = contentKey(region);
+  std::vector<std::string> labels;
+  for (const ObjectBrief& o : region.objects) labels.push_back(o.label);
+  int known = 0;
+  s.room_probs = roomDistribution(labels, &known);
+  if (known > 0) {
+    const size_t k = size_t(std::max_element(s.room_probs.begin(), s.room_probs.end()) - s.room_probs.begin());
+    s.label = priors_->rooms()[k].name;
+    s.confidence = (1.0 - std::exp(-known / 2.0)) * s.room_probs[k];
+  } else if (region.elongation >= kHallwayElongation && region.nodes >= 3) {
+    s.label = "hallway";
+    s.confidence = 0.3;
+  }
+  // Description: "A bedroom (about 4.1 x 3.0 m) with a bed, a wardrobe and 2 more objects."
+  std::map<std::string, int> count;
+  for (const auto& l : labels) ++count[l];
+  std::vector<std::pair<int, std::string>> top;
+  for (const auto& [l, c] : count) top.push_back({c, l});
+  std::stable_sort(top.begin(), top.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::ostringstream d;
+  const Vec3 ext = region.box_max - region.box_min;
+  d.setf(std::ios::fixed);
+  d.precision(1);
+  d << (s.label.empty() ? std::string("An unidentified area") : "A " + s.label) << " (about " << ext.x() + 1.0 << " x "
+    << ext.y() + 1.0 << " m)";
+  if (top.empty()) d << " with no objects seen yet";
+  for (size_t i = 0; i < top.size() && i < 3; ++i)
+    d << (i == 0 ? " with " : i + 1 == std::min<size_t>(top.size(), 3) && top.size() <= 3 ? " and " : ", ")
+      << (top[i].first > 1 ? std::to_string(top[i].first) + " " + top[i].second + "s" : article(top[i].second));
+  if (top.size() > 3) d << " and " << top.size() - 3 << " more kinds of object";
+  d << ".";
+  s.description = d.str();
+  return s;
+}
+
+double BuiltinReasoner::targetChance(const CoarseQuery& q, const RegionState& r) const {
+  const size_t R = priors_->rooms().size();
+  const TextEncoder& enc = priors_->encoder();
+  for (const auto& o : r.objects)
+    for (const auto& t : q.instruction.targets)
+      if (enc.similarity(o, t) >= 0.85) return 1.0;
+  // Target affinity per room.
+  std::vector<double> A(R, 0.0);
+  bool any = false;
+  for (const auto& t : q.instruction.targets) {
+    const auto row = priors_->roomsGivenObject(t);
+    if (row.empty()) continue;
+    any = true;
+    for (size_t k = 0; k < R; ++k) A[k] = std::max(A[k], row[k]);
+  }
+  if (!any) std::fill(A.begin(), A.end(), 1.0);  // no prior: every room alike (chance 0.5 below)
+  const int room = q.instruction.room.empty() ? -1 : priors_->roomIndex(q.instruction.room);
+  if (room >= 0)
+    for (size_t k = 0; k < R; ++k)
+      if (int(k) != room) A[k] *= kOtherRoom;
+  const double amax = *std::max_element(A.begin(), A.end());
+  if (amax <= 0.0) return 0.0;
+  if (!any && room < 0) return 0.5;  // nothing to tell the regions apart but a matching object
+  double mean = 0.0;
+  for (double& a : A) mean += (a /= amax) / double(R);
+  int known = 0;
+  const auto P = roomDistribution(r.objects, &known);
+  const double conf = 1.0 - std::exp(-known / 2.0);
+  double s_label = 0.0;
+  for (size_t k = 0; k < R; ++k) s_label += P[k] * A[k];
+  return conf * s_label + (1.0 - conf) * mean;
+}
+
+CoarseDecision BuiltinReasoner::chooseRegion(const CoarseQuery& q) {
+  const auto t0 = std::chrono::steady_clock::now();
+  CoarseDecision d;
+  double best = -1.0;
+  double best_s = 0.0;
+  for (const RegionState& r : q.regions) {
+    if (r.frontiers <= 0 || r.cost_s < 0.0) continue;
+    const double s = targetChance(q, r);
+    double v = (s + 0.02) * r.gain / std::max(r.cost_s, 1.0);
+    if (r.id == q.current_region) v *= kStay;
+    if (v > best) best = v, d.region = r.id, best_s = s;
+  }
+  if (d.region < 0) {
+    d.fault = "no_frontiers";
+    d.reason = "no region has anything left to explore";
+  } else {
+    const RegionState* r = q.find(d.region);
+    std::ostringstream why;
+    why.setf(std::ios::fixed);
+    why.precision(2);
+    why << "region " << d.region << " (" << (r->label.empty() ? "unlabelled" : r->label) << "): chance " << best_s
+        << ", " << r->frontiers << " targets, " << r->cost_s << " s away";
+    d.reason = why.str();
+  }
+  d.latency_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return d;
+}
+
+}  // namespace ussnav

@@ -1,0 +1,270 @@
+// Loading and combining the commonsense tables (see priors.hpp).
+
+#include "ussnav/reasoning/priors.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "ussnav/core/error.hpp"
+
+namespace ussnav {
+namespace {
+
+constexpr double kNearCosine = 0.6;  // loosest label -> category match
+
+std::string lower(std::string s) {
+  for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::string cur;
+  std::stringstream ss(s);
+  while (std::getline(ss, cur, sep)) {
+    if (!cur.empty() && cur.back() == '\r') cur.pop_back();
+    out.push_back(cur);
+  }
+  return out;
+}
+
+std::string trim(const std::string& s) {
+  const auto a = s.find_first_not_of(" \t");
+  if (a == std::string::npos) return "";
+  return s.substr(a, s.find_last_not_of(" \t") - a + 1);
+}
+
+// Non-comment, non-empty lines of a table, split by `sep`; the first is the header.
+std::vector<std::vector<std::string>> readTable(const std::filesystem::path& p, char sep) {
+  std::ifstream in(p);
+  if (!in) throw InputError(p.string(), "", "cannot read the priors table (expected it in data/priors/)");
+  std::vector<std::vector<std::string>> rows;
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (trim(line).empty() || line[0] == '#') continue;
+    rows.push_back(split(line, sep));
+  }
+  if (rows.size() < 2) throw InputError(p.string(), "", "expected a header and at least one row");
+  return rows;
+}
+
+double number(const std::filesystem::path& p, size_t line, const std::string& col, const std::string& s) {
+  try {
+    size_t used = 0;
+    const double v = std::stod(s, &used);
+    if (used == s.size() && std::isfinite(v)) return v;
+  } catch (const std::exception&) {
+  }
+  throw InputError(p.string(), "row " + std::to_string(line) + ", column " + col, "'" + s + "' is not a number");
+}
+
+void normalise(std::vector<double>& v) {
+  double s = 0.0;
+  for (double x : v) s += x;
+  if (s > 0.0)
+    for (double& x : v) x /= s;
+}
+
+}  // namespace
+
+std::string categoryWords(const std::string& name) {
+  std::string out;
+  for (size_t i = 0; i < name.size(); ++i) {
+    const char c = name[i];
+    if (c == '_' || c == '-' || c == ' ') {
+      if (!out.empty() && out.back() != ' ') out += ' ';
+      continue;
+    }
+    const bool up = std::isupper(static_cast<unsigned char>(c));
+    const bool prev_lower = i > 0 && std::islower(static_cast<unsigned char>(name[i - 1]));
+    const bool next_lower = i + 1 < name.size() && std::islower(static_cast<unsigned char>(name[i + 1]));
+    const bool prev_upper = i > 0 && std::isupper(static_cast<unsigned char>(name[i - 1]));
+    if (up && !out.empty() && out.back() != ' ' && (prev_lower || (prev_upper && next_lower))) out += ' ';
+    out += char(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return out;
+}
+
+std::filesystem::path CommonsensePriors::defaultDir() {
+  namespace fs = std::filesystem;
+  for (fs::path p : {fs::path("data/priors"), fs::path(USSNAV_SOURCE_DIR) / "data/priors"}) {
+    std::error_code ec;
+    if (fs::exists(p / "room_types.tsv", ec)) return p;
+  }
+  return {};
+}
+
+std::shared_ptr<const CommonsensePriors> CommonsensePriors::load(const std::filesystem::path& dir, std::shared_ptr<const TextEncoder> encoder,
+                                          double match_cosine) {
+  auto P = std::make_shared<CommonsensePriors>();
+  P->encoder_ = std::move(encoder);
+  P->match_cosine_ = match_cosine;
+  if (dir.empty()) throw InputError("data/priors", "", "priors folder not found (run from the repository)");
+
+  // Room types, and which table columns mean each.
+  const auto rt_path = dir / "room_types.tsv";
+  const auto rt = readTable(rt_path, '\t');
+  std::map<std::string, int> sgnav_col, procthor_col;  // column name -> room index
+  for (size_t i = 1; i < rt.size(); ++i) {
+    if (rt[i].size() != 5) throw InputError(rt_path.string(), "row " + std::to_string(i), "expected 5 tab-separated columns");
+    RoomType r;
+    r.name = trim(rt[i][0]);
+    for (const auto& a : split(rt[i][1], ','))
+      if (!trim(a).empty()) r.aliases.push_back(trim(a));
+    r.description = trim(rt[i][4]);
+    if (trim(rt[i][2]) != "-") sgnav_col[trim(rt[i][2])] = int(P->rooms_.size());
+    if (trim(rt[i][3]) != "-") procthor_col[trim(rt[i][3])] = int(P->rooms_.size());
+    P->rooms_.push_back(r);
+  }
+  const size_t R = P->rooms_.size();
+
+  // Adjacency prior.
+  P->adjacency_.assign(R, std::vector<double>(R, 0.1));
+  const auto adj_path = dir / "room_adjacency.tsv";
+  const auto adj = readTable(adj_path, '\t');
+  for (size_t i = 1; i < adj.size(); ++i) {
+    if (adj[i].size() != 3) throw InputError(adj_path.string(), "row " + std::to_string(i), "expected room_a, room_b, weight");
+    const int a = P->roomIndex(adj[i][0]), b = P->roomIndex(adj[i][1]);
+    if (a < 0 || b < 0) throw InputError(adj_path.string(), "row " + std::to_string(i), "unknown room type (not in room_types.tsv)");
+    const double w = number(adj_path, i, "weight", adj[i][2]);
+    P->adjacency_[size_t(a)][size_t(b)] = P->adjacency_[size_t(b)][size_t(a)] = std::clamp(w, 0.0, 1.0);
+  }
+
+  // ProcTHOR placement weights: 0 / 1 / 2 -> likelihood.
+  const auto pt_path = dir / "procthor_object_room_weights.tsv";
+  const auto pt = readTable(pt_path, '\t');
+  std::vector<std::pair<size_t, int>> pt_cols;  // column -> room
+  for (size_t c = 1; c < pt[0].size(); ++c)
+    if (procthor_col.count(pt[0][c])) pt_cols.push_back({c, procthor_col[pt[0][c]]});
+  if (pt_cols.empty()) throw InputError(pt_path.string(), "header", "no room column matches room_types.tsv");
+  for (size_t i = 1; i < pt.size(); ++i) {
+    Row row{categoryWords(pt[i][0]), {}, std::vector<double>(R, 0.0)};
+    row.names = {row.category};
+    bool any = false, blank = false;
+    for (auto [c, r] : pt_cols) {
+      if (c >= pt[i].size()) throw InputError(pt_path.string(), "row " + std::to_string(i), "too few columns");
+      if (trim(pt[i][c]).empty()) blank = true;  // not annotated (Doorframe, Window): no prior
+      if (blank) continue;
+      const double w = number(pt_path, i, pt[0][c], pt[i][c]);
+      any = any || w > 0.0;
+      row.p[size_t(r)] = w >= 2.0 ? 1.0 : w >= 1.0 ? 0.35 : 0.03;
+    }
+    if (!any || blank) continue;  // says nothing (e.g. Television, placed through asset groups)
+    normalise(row.p);
+    P->rows_.push_back(std::move(row));
+  }
+
+  // SG-Nav co-occurrence: log-likelihood-like scores -> exp.
+  const auto sg_path = dir / "sgnav_object_room_cooccurrence.csv";
+  const auto sg = readTable(sg_path, ',');
+  std::vector<std::pair<size_t, int>> sg_cols;
+  for (size_t c = 1; c < sg[0].size(); ++c)
+    if (sgnav_col.count(sg[0][c])) sg_cols.push_back({c, sgnav_col[sg[0][c]]});
+  if (sg_cols.empty()) throw InputError(sg_path.string(), "header", "no room column matches room_types.tsv");
+  // MP3D's mpcat40 table names the NYU40 classes and raw labels each SG-Nav category covers
+  // (tv_monitor: television; chest_of_drawers: dresser, night stand): aliases for matching.
+  std::map<std::string, std::vector<std::string>> aliases;
+  const auto mp_path = dir / "mpcat40.tsv";
+  const auto mp = readTable(mp_path, '\t');
+  const auto col = [&](const std::string& name) {
+    const auto it = std::find(mp[0].begin(), mp[0].end(), name);
+    if (it == mp[0].end()) throw InputError(mp_path.string(), "header", "expected a column '" + name + "'");
+    return size_t(it - mp[0].begin());
+  };
+  const size_t c_cat = col("mpcat40"), c_nyu = col("nyu40"), c_labels = col("labels");
+  for (size_t i = 1; i < mp.size(); ++i) {
+    if (mp[i].size() <= c_cat) continue;
+    auto& a = aliases[categoryWords(mp[i][c_cat])];
+    for (size_t c : {c_nyu, c_labels})
+      if (c < mp[i].size())
+        for (const auto& x : split(mp[i][c], ','))
+          if (!trim(x).empty()) a.push_back(categoryWords(trim(x)));
+  }
+  for (size_t i = 1; i < sg.size(); ++i) {
+    Row row{categoryWords(sg[i][0]), {}, std::vector<double>(R, 0.0)};
+    row.names = {row.category};
+    for (const auto& a : aliases[row.category])
+      if (a != row.category) row.names.push_back(a);
+    for (auto [c, r] : sg_cols) {
+      if (c >= sg[i].size()) throw InputError(sg_path.string(), "row " + std::to_string(i), "too few columns");
+      row.p[size_t(r)] = std::exp(std::clamp(number(sg_path, i, sg[0][c], sg[i][c]), -30.0, 30.0));
+    }
+    normalise(row.p);
+    P->rows_.push_back(std::move(row));
+  }
+  for (const Row& r : P->rows_)
+    if (std::find(P->categories_.begin(), P->categories_.end(), r.category) == P->categories_.end())
+      P->categories_.push_back(r.category);
+  return P;
+}
+
+int CommonsensePriors::roomIndex(const std::string& name) const {
+  const std::string n = lower(trim(name));
+  for (size_t i = 0; i < rooms_.size(); ++i) {
+    if (lower(rooms_[i].name) == n) return int(i);
+    for (const auto& a : rooms_[i].aliases)
+      if (lower(a) == n) return int(i);
+  }
+  if (!encoder_ || n.empty()) return -1;
+  int best = -1;
+  double best_c = match_cosine_;
+  for (size_t i = 0; i < rooms_.size(); ++i) {
+    const double c = encoder_->similarity(n, rooms_[i].name);
+    if (c >= best_c) best_c = c, best = int(i);
+  }
+  return best;
+}
+
+std::vector<double> CommonsensePriors::roomsGivenObject(const std::string& label) const {
+  const std::string key = lower(trim(label));
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (auto it = cache_.find(key); it != cache_.end()) return it->second;
+  }
+  std::vector<double> sum(rooms_.size(), 0.0);
+  int n = 0;
+  // Exact category words first; otherwise every row within match_cosine of the label.
+  for (const Row& r : rows_)
+    if (std::find(r.names.begin(), r.names.end(), key) != r.names.end()) {
+      for (size_t k = 0; k < sum.size(); ++k) sum[k] += r.p[k];
+      ++n;
+    }
+  if (n == 0 && encoder_) {
+    // Every category within match_cosine; failing that, the nearest one(s) within
+    // kNearCosine ("refrigerator" -> Fridge, "nightstand" -> side table), at half weight
+    // (mixed with a uniform row) since the match is loose.
+    const Embedding e = encoder_->encode(key);
+    std::vector<double> cos(rows_.size());
+    double best = 0.0;
+    for (size_t i = 0; i < rows_.size(); ++i) {
+      cos[i] = 0.0;
+      for (const auto& name : rows_[i].names) cos[i] = std::max(cos[i], cosineSimilarity(e, encoder_->encode(name)));
+      best = std::max(best, cos[i]);
+    }
+    const bool loose = best < match_cosine_;
+    if (!loose || best >= kNearCosine)
+      for (size_t i = 0; i < rows_.size(); ++i)
+        if (cos[i] >= (loose ? best - 1e-9 : match_cosine_)) {
+          for (size_t k = 0; k < sum.size(); ++k) sum[k] += loose ? 0.5 * rows_[i].p[k] + 0.5 / double(sum.size()) : rows_[i].p[k];
+          ++n;
+        }
+  }
+  std::vector<double> out;
+  if (n > 0) {
+    out = sum;
+    normalise(out);
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  cache_[key] = out;
+  return out;
+}
+
+double CommonsensePriors::adjacency(int a, int b) const {
+  if (a < 0 || b < 0 || size_t(a) >= rooms_.size() || size_t(b) >= rooms_.size()) return 0.0;
+  return adjacency_[size_t(a)][size_t(b)];
+}
+
+}  // namespace ussnav

@@ -1,0 +1,210 @@
+// goto / ask on a saved scene graph (see scene_queries.hpp).
+
+#include "ussnav/reasoning/scene_queries.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <queue>
+#include <set>
+#include <sstream>
+
+#include "ussnav/reasoning/builtin_reasoner.hpp"
+
+namespace ussnav {
+namespace {
+
+std::string fmt(const Vec3& p) {
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(1);
+  s << "(" << p.x() << ", " << p.y() << ")";
+  return s.str();
+}
+
+std::string regionName(int id, const std::map<int, RegionSemantics>& sem) {
+  const auto it = sem.find(id);
+  const std::string l = it == sem.end() || it->second.label.empty() ? "unidentified area" : it->second.label;
+  return "region " + std::to_string(id) + " (" + l + ")";
+}
+
+int nearestNode(const SceneGraph& g, const Vec3& p, const std::set<int>* among = nullptr) {
+  int best = -1;
+  double bd = 0.0;
+  for (size_t i = 0; i < g.nodes.size(); ++i) {
+    if (among && !among->count(g.nodes[i].id)) continue;
+    const double d = (g.nodes[i].centroid - p).squaredNorm();
+    if (best < 0 || d < bd) best = int(i), bd = d;
+  }
+  return best;
+}
+
+}  // namespace
+
+std::map<int, RegionSemantics> graphSemantics(const SceneGraph& g, Reasoner* reasoner) {
+  std::map<int, RegionSemantics> out;
+  const auto summaries = summarizeRegions(g);
+  for (const RegionSummary& s : summaries) {
+    const SgRegion& r = g.regions[size_t(g.regionIndex(s.id))];
+    if (!r.label.empty() || !r.description.empty()) {
+      RegionSemantics sem;
+      sem.label = r.label;
+      sem.description = r.description;
+      sem.confidence = r.label.empty() ? 0.0 : 0.8;
+      sem.source = "graph";
+      out[s.id] = sem;
+    } else if (reasoner) {
+      out[s.id] = reasoner->labelRegion(s);
+    }
+  }
+  return out;
+}
+
+std::vector<std::string> graphVocabulary(const SceneGraph& g) {
+  std::set<std::string> v;
+  for (const SgObject& o : g.objects) v.insert(o.label);
+  return {v.begin(), v.end()};
+}
+
+RegionPick pickRegionForRequest(const SceneGraph& g, const Instruction& ins, const std::map<int, RegionSemantics>& sem,
+                                const CommonsensePriors& priors, double goal_similarity) {
+  RegionPick best;
+  const auto summaries = summarizeRegions(g);
+  BuiltinReasoner builtin(std::shared_ptr<const CommonsensePriors>(&priors, [](const CommonsensePriors*) {}));
+  CoarseQuery q;
+  q.instruction = ins;
+  const int want_room = priors.roomIndex(ins.room.empty() ? ins.room_hint : ins.room);
+  for (const RegionSummary& s : summaries) {
+    RegionPick p;
+    p.region = s.id;
+    const auto it = sem.find(s.id);
+    const bool room_ok = want_room >= 0 && it != sem.end() && priors.roomIndex(it->second.label) == want_room;
+    // A matching object in the region.
+    double obj_best = 0.0;
+    for (const ObjectBrief& o : s.objects)
+      for (const auto& t : ins.targets) {
+        const double c = priors.encoder().similarity(o.label, t);
+        if (c >= goal_similarity && c > obj_best) obj_best = c, p.object = o.id, p.goal = o.position;
+      }
+    if (p.object >= 0 && (ins.room.empty() || room_ok)) {
+      p.score = 1.0 + (room_ok ? 0.5 : 0.0);
+      p.reason = "holds " + std::to_string(p.object) + " matching \"" + ins.text + "\"";
+    } else {
+      RegionState st;
+      st.id = s.id;
+      for (const ObjectBrief& o : s.objects) st.objects.push_back(o.label);
+      p.score = ins.targets.empty() ? 0.0 : 0.5 * builtin.targetChance(q, st);
+      if (room_ok) p.score += 0.6;
+      p.object = -1;
+      p.reason = room_ok ? "its label names the room asked for" : "commonsense chance of holding it";
+    }
+    if (p.object < 0) {
+      const int n = nearestNode(g, s.centroid, nullptr);
+      std::set<int> mine(g.regions[size_t(g.regionIndex(s.id))].nodes.begin(), g.regions[size_t(g.regionIndex(s.id))].nodes.end());
+      const int k = nearestNode(g, s.centroid, &mine);
+      p.goal = g.nodes[size_t(k >= 0 ? k : n)].centroid;
+    }
+    if (p.score > best.score || best.region < 0) best = p;
+  }
+  if (best.region >= 0) best.reason = regionName(best.region, sem) + ": " + best.reason;
+  return best;
+}
+
+std::optional<std::vector<Vec3>> routeOnSceneGraph(const SceneGraph& g, const Vec3& from, const Vec3& to) {
+  const int a = nearestNode(g, from), b = nearestNode(g, to);
+  if (a < 0 || b < 0) return std::nullopt;
+  std::vector<std::vector<std::pair<int, double>>> adj(g.nodes.size());
+  for (const SgEdge& e : g.edges) {
+    const int i = g.nodeIndex(e.a), j = g.nodeIndex(e.b);
+    if (i < 0 || j < 0) continue;
+    const double d = (g.nodes[size_t(i)].centroid - g.nodes[size_t(j)].centroid).norm();
+    adj[size_t(i)].push_back({j, d});
+    adj[size_t(j)].push_back({i, d});
+  }
+  std::vector<double> dist(g.nodes.size(), 1e300);
+  std::vector<int> prev(g.nodes.size(), -1);
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> pq;
+  dist[size_t(a)] = 0.0;
+  pq.push({0.0, a});
+  while (!pq.empty()) {
+    const auto [d, u] = pq.top();
+    pq.pop();
+    if (d > dist[size_t(u)]) continue;
+    if (u == b) break;
+    for (const auto& [v, w] : adj[size_t(u)])
+      if (d + w < dist[size_t(v)]) dist[size_t(v)] = d + w, prev[size_t(v)] = u, pq.push({d + w, v});
+  }
+  if (dist[size_t(b)] >= 1e300) return std::nullopt;
+  std::vector<Vec3> path{to};
+  for (int u = b; u >= 0; u = prev[size_t(u)]) path.push_back(g.nodes[size_t(u)].centroid);
+  path.push_back(from);
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+std::string answerQuestion(const SceneGraph& g, const std::string& question, const std::optional<Vec3>& at,
+                           const std::map<int, RegionSemantics>& sem, const CommonsensePriors& priors) {
+  const auto summaries = summarizeRegions(g);
+  std::vector<std::string> words = instructionWords(question);
+  auto has = [&](std::initializer_list<const char*> ws) {
+    for (const char* w : ws)
+      if (std::find(words.begin(), words.end(), w) != words.end()) return true;
+    return false;
+  };
+  std::ostringstream out;
+  auto describe = [&](const RegionSummary& s) {
+    const auto it = sem.find(s.id);
+    out << "You are in " << regionName(s.id, sem) << ". ";
+    if (it != sem.end() && !it->second.description.empty()) out << it->second.description << " ";
+    if (!s.objects.empty()) {
+      out << "Objects here: ";
+      for (size_t i = 0; i < s.objects.size(); ++i) out << (i ? ", " : "") << s.objects[i].label << " at " << fmt(s.objects[i].position);
+      out << ". ";
+    }
+    if (!s.adjacent.empty()) {
+      out << "It connects to ";
+      for (size_t i = 0; i < s.adjacent.size(); ++i) out << (i ? ", " : "") << regionName(s.adjacent[i], sem);
+      out << ".";
+    }
+  };
+  // "Where is / is there / find X": objects matching X.
+  if (has({"where", "there", "find", "any", "how"}) && !has({"layout", "rooms", "regions", "am"})) {
+    try {
+      const Instruction ins = interpretInstruction(question, priors, graphVocabulary(g));
+      if (!ins.targets.empty() && ins.how != "literal") {
+        int n = 0;
+        for (const RegionSummary& s : summaries)
+          for (const ObjectBrief& o : s.objects)
+            for (const auto& t : ins.targets)
+              if (priors.encoder().similarity(o.label, t) >= 0.85) {
+                out << (n++ ? " " : "") << "A " << o.label << " (object " << o.id << ") is at " << fmt(o.position) << " in "
+                    << regionName(s.id, sem) << ".";
+                break;
+              }
+        if (n == 0) out << "No " << ins.targets.front() << " has been seen yet.";
+        return out.str();
+      }
+    } catch (const std::exception&) {
+    }
+  }
+  if (has({"layout", "rooms", "regions", "building", "map", "overview"}) || !at) {
+    out << "The map has " << summaries.size() << " regions and " << g.objects.size() << " objects.";
+    for (const RegionSummary& s : summaries) {
+      out << " " << regionName(s.id, sem) << ": " << s.objects.size() << " objects";
+      if (!s.adjacent.empty()) {
+        out << ", next to";
+        for (int a : s.adjacent) out << " " << a;
+      }
+      out << ".";
+    }
+    return out.str();
+  }
+  const int r = regionAt(g, *at);
+  for (const RegionSummary& s : summaries)
+    if (s.id == r) describe(s);
+  if (out.str().empty()) out << "The point " << fmt(*at) << " is in no mapped region.";
+  return out.str();
+}
+
+}  // namespace ussnav

@@ -1,0 +1,155 @@
+// The offline reasoner on hand-made regions: room labels from objects, the region to search for
+// a target, the coarse-query schema and the validation of replies.
+
+#include <gtest/gtest.h>
+
+#include "ussnav/reasoning/builtin_reasoner.hpp"
+#include "ussnav/reasoning/coarse_query.hpp"
+
+using namespace ussnav;
+
+namespace {
+
+std::shared_ptr<const CommonsensePriors> priors() {
+  static const auto p = CommonsensePriors::load(CommonsensePriors::defaultDir(), makeTextEncoder("wordnet"));
+  return p;
+}
+
+RegionSummary region(int id, std::vector<std::string> labels, Vec3 min = Vec3(0, 0, 1), Vec3 max = Vec3(4, 4, 1)) {
+  RegionSummary r;
+  r.id = id;
+  r.box_min = min;
+  r.box_max = max;
+  r.centroid = (min + max) / 2;
+  r.nodes = 6;
+  const Vec3 e = max - min;
+  r.elongation = std::max(e.x(), e.y()) / std::max(0.3, std::min(e.x(), e.y()));
+  int k = 0;
+  for (auto& l : labels) r.objects.push_back({++k, l, r.centroid, Vec3(1, 1, 1), 5});
+  return r;
+}
+
+RegionState state(int id, std::vector<std::string> objects, int frontiers = 3, double gain = 100, double cost = 10) {
+  RegionState r;
+  r.id = id;
+  r.objects = std::move(objects);
+  r.frontiers = frontiers;
+  r.gain = gain;
+  r.cost_s = frontiers > 0 ? cost : -1.0;
+  return r;
+}
+
+// A kitchen, a bedroom-like room without a bed in view yet, a living room and a bare area.
+CoarseQuery house(const std::string& goal) {
+  CoarseQuery q;
+  q.instruction = interpretInstruction(goal, *priors());
+  q.regions = {state(1, {"fridge", "microwave", "sink"}), state(2, {"wardrobe", "nightstand", "alarm clock"}),
+               state(3, {"sofa", "coffee table", "television"}), state(4, {})};
+  q.current_region = 1;
+  return q;
+}
+
+}  // namespace
+
+TEST(BuiltinReasoner, LabelsRegionsFromTheirObjects) {
+  BuiltinReasoner R(priors());
+  EXPECT_EQ(R.labelRegion(region(1, {"bed", "nightstand", "wardrobe"})).label, "bedroom");
+  EXPECT_EQ(R.labelRegion(region(2, {"toilet", "sink", "towel"})).label, "bathroom");
+  EXPECT_EQ(R.labelRegion(region(3, {"fridge", "stove", "microwave"})).label, "kitchen");
+  EXPECT_EQ(R.labelRegion(region(4, {"sofa", "coffee table"})).label, "living room");
+  const RegionSemantics corridor = R.labelRegion(region(5, {}, Vec3(0, 0, 1), Vec3(9, 1.2, 1)));
+  EXPECT_EQ(corridor.label, "hallway");
+  // Unknown labels give no evidence: a wardrobe and a nightstand alone stay unconfident.
+  EXPECT_LT(R.labelRegion(region(9, {"nightstand"})).confidence, 0.3);
+  const RegionSemantics bare = R.labelRegion(region(6, {}));
+  EXPECT_EQ(bare.label, "");
+  EXPECT_DOUBLE_EQ(bare.confidence, 0.0);
+  // More evidence, more confidence; the description names the objects.
+  const RegionSemantics one = R.labelRegion(region(7, {"bed"}));
+  const RegionSemantics three = R.labelRegion(region(8, {"bed", "dresser", "alarm clock"}));
+  EXPECT_GT(three.confidence, one.confidence);
+  EXPECT_NE(three.description.find("a bed"), std::string::npos) << three.description;
+  EXPECT_EQ(three.source, "builtin");
+}
+
+TEST(BuiltinReasoner, RanksTheBedroomLikeRegionFirstForABed) {
+  BuiltinReasoner R(priors());
+  const CoarseQuery q = house("bed");
+  const CoarseDecision d = R.chooseRegion(q);
+  EXPECT_TRUE(d.fault.empty()) << d.fault;
+  EXPECT_EQ(d.region, 2) << d.reason;
+  EXPECT_GT(R.targetChance(q, *q.find(2)), R.targetChance(q, *q.find(1)));
+  EXPECT_GT(R.targetChance(q, *q.find(4)), R.targetChance(q, *q.find(1)));  // unknown beats kitchen
+  // Other targets, other regions.
+  EXPECT_EQ(R.chooseRegion(house("fridge")).region, 1);
+  EXPECT_EQ(R.chooseRegion(house("television")).region, 3);
+  EXPECT_EQ(R.chooseRegion(house("somewhere to sleep")).region, 2);
+}
+
+TEST(BuiltinReasoner, CostAndRoomConstraintsCount) {
+  BuiltinReasoner R(priors());
+  // The bedroom-like region far away and nearly explored, the bare area close and open: the
+  // bare area wins on utility.
+  CoarseQuery q = house("bed");
+  q.regions[1].cost_s = 200.0;
+  q.regions[1].gain = 5.0;
+  q.regions[3].gain = 300.0;
+  q.regions[3].cost_s = 5.0;
+  EXPECT_EQ(R.chooseRegion(q).region, 4);
+  // A sofa in the living room: not the kitchen region even when it is the only other option.
+  CoarseQuery s = house("the sofa in the living room");
+  s.regions = {state(1, {"fridge", "stove"}), state(3, {"coffee table", "tv stand"})};
+  EXPECT_EQ(R.chooseRegion(s).region, 3);
+  // A region already holding the target is chosen (to confirm it).
+  CoarseQuery t = house("bed");
+  t.regions[2].objects.push_back("bed");
+  EXPECT_EQ(R.chooseRegion(t).region, 3);
+  // Nothing left to explore anywhere: a fault, not a guess.
+  CoarseQuery none = house("bed");
+  for (auto& r : none.regions) r.frontiers = 0, r.cost_s = -1;
+  EXPECT_EQ(R.chooseRegion(none).fault, "no_frontiers");
+}
+
+TEST(CoarseQuery, SerialisesTheDocumentedSchema) {
+  CoarseQuery q = house("the sofa in the living room");
+  q.history = {1, 3};
+  q.regions[0].label = "kitchen";
+  q.regions[0].description = "A kitchen.";
+  q.regions[0].adjacent = {2, 4};
+  q.room_adjacency.push_back({"hallway", "bedroom", 1.0});
+  const nlohmann::json j = toJson(q);
+  for (const char* k : {"instruction", "targets", "room_constraint", "current_region", "visit_history", "regions",
+                        "room_adjacency_prior"})
+    EXPECT_TRUE(j.contains(k)) << k;
+  EXPECT_EQ(j.size(), 7u);
+  EXPECT_EQ(j["instruction"], "the sofa in the living room");
+  EXPECT_EQ(j["targets"], nlohmann::json::array({"sofa"}));
+  EXPECT_EQ(j["room_constraint"], "living room");
+  EXPECT_EQ(j["visit_history"], nlohmann::json::array({1, 3}));
+  ASSERT_EQ(j["regions"].size(), 4u);
+  const auto& r = j["regions"][0];
+  for (const char* k : {"id", "label", "description", "adjacent", "objects", "frontiers", "frontier_gain", "distance_m", "visits"})
+    EXPECT_TRUE(r.contains(k)) << k;
+  EXPECT_EQ(r.size(), 9u);
+  EXPECT_EQ(r["label"], "kitchen");
+  EXPECT_EQ(r["objects"], nlohmann::json::array({"fridge", "microwave", "sink"}));
+  EXPECT_EQ(j["room_adjacency_prior"][0], nlohmann::json::array({"hallway", "bedroom", 1.0}));
+}
+
+TEST(CoarseQuery, RepliesAreValidated) {
+  CoarseQuery q = house("bed");
+  q.regions[3].frontiers = 0;
+  auto ok = parseCoarseReply(R"({"region": 2, "reason": "wardrobe and nightstand: a bedroom"})", q);
+  EXPECT_TRUE(ok.fault.empty());
+  EXPECT_EQ(ok.region, 2);
+  EXPECT_EQ(ok.reason, "wardrobe and nightstand: a bedroom");
+  EXPECT_EQ(parseCoarseReply("Sure! ```json\n{\"region\": \"3\"}\n```", q).region, 3);  // fenced, id as text
+  EXPECT_TRUE(parseCoarseReply("Sure! ```json\n{\"region\": \"3\"}\n```", q).fault.empty());
+  EXPECT_EQ(parseCoarseReply("I think region two", q).fault, "malformed");
+  EXPECT_EQ(parseCoarseReply(R"({"region": "two"})", q).fault, "malformed");
+  EXPECT_EQ(parseCoarseReply(R"({"room": 2})", q).fault, "malformed");
+  EXPECT_EQ(parseCoarseReply(R"({"region": 2.5})", q).fault, "malformed");
+  EXPECT_EQ(parseCoarseReply(R"({"region": 42})", q).fault, "unknown_region");
+  EXPECT_EQ(parseCoarseReply(R"({"region": 4})", q).fault, "no_frontiers");
+  EXPECT_EQ(parseCoarseReply(R"({"region": 2, "reason": "unclosed)", q).fault, "malformed");
+}

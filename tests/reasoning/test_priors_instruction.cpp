@@ -1,0 +1,137 @@
+// Commonsense priors read from data/priors/ and free-text instructions interpreted with them.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include "ussnav/core/error.hpp"
+#include "ussnav/reasoning/instruction.hpp"
+#include "ussnav/reasoning/priors.hpp"
+
+using namespace ussnav;
+
+namespace {
+
+std::shared_ptr<const CommonsensePriors> priors() {
+  static const auto p = CommonsensePriors::load(CommonsensePriors::defaultDir(), makeTextEncoder("wordnet"));
+  return p;
+}
+
+std::string mostLikelyRoom(const std::string& label) {
+  const auto row = priors()->roomsGivenObject(label);
+  if (row.empty()) return "";
+  return priors()->rooms()[size_t(std::max_element(row.begin(), row.end()) - row.begin())].name;
+}
+
+bool contains(const std::vector<std::string>& v, const std::string& x) {
+  return std::find(v.begin(), v.end(), x) != v.end();
+}
+
+}  // namespace
+
+TEST(Priors, CategoryWordsSplitsTableNames) {
+  EXPECT_EQ(categoryWords("ArmChair"), "arm chair");
+  EXPECT_EQ(categoryWords("TVStand"), "tv stand");
+  EXPECT_EQ(categoryWords("tv_monitor"), "tv monitor");
+  EXPECT_EQ(categoryWords("chest_of_drawers"), "chest of drawers");
+}
+
+TEST(Priors, ObjectsPointToTheirRooms) {
+  ASSERT_FALSE(CommonsensePriors::defaultDir().empty());
+  EXPECT_EQ(mostLikelyRoom("bed"), "bedroom");
+  EXPECT_EQ(mostLikelyRoom("toilet"), "bathroom");
+  EXPECT_EQ(mostLikelyRoom("fridge"), "kitchen");
+  EXPECT_EQ(mostLikelyRoom("refrigerator"), "kitchen");  // a synonym, through the text encoder
+  EXPECT_EQ(mostLikelyRoom("couch"), "living room");     // sofa's synonym
+  EXPECT_EQ(mostLikelyRoom("shower"), "bathroom");
+  const auto row = priors()->roomsGivenObject("bed");
+  double sum = 0.0;
+  for (double p : row) sum += p;
+  EXPECT_NEAR(sum, 1.0, 1e-9);
+  EXPECT_TRUE(priors()->roomsGivenObject("zorblax").empty());
+}
+
+TEST(Priors, RoomNamesAliasesAndAdjacency) {
+  const auto& P = *priors();
+  EXPECT_EQ(P.roomIndex("corridor"), P.roomIndex("hallway"));
+  EXPECT_EQ(P.roomIndex("Conference Room"), P.roomIndex("meeting room"));
+  EXPECT_GE(P.roomIndex("bedroom"), 0);
+  EXPECT_EQ(P.roomIndex("bed"), -1);  // an object is not a room
+  EXPECT_DOUBLE_EQ(P.adjacency(P.roomIndex("hallway"), P.roomIndex("bedroom")), 1.0);
+  EXPECT_DOUBLE_EQ(P.adjacency(P.roomIndex("bedroom"), P.roomIndex("hallway")), 1.0);
+  EXPECT_DOUBLE_EQ(P.adjacency(P.roomIndex("gym"), P.roomIndex("bathroom")), 0.1);
+}
+
+TEST(Priors, MalformedTablesAreRejectedWithTheFileName) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "ussnav_bad_priors";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  for (const char* f : {"room_types.tsv", "room_adjacency.tsv", "procthor_object_room_weights.tsv",
+                        "sgnav_object_room_cooccurrence.csv", "mpcat40.tsv"})
+    fs::copy_file(CommonsensePriors::defaultDir() / f, dir / f);
+  const std::shared_ptr<const TextEncoder> enc = makeTextEncoder("ngram");
+  EXPECT_NO_THROW(CommonsensePriors::load(dir, enc));
+  {
+    std::ofstream out(dir / "room_adjacency.tsv", std::ios::app);
+    out << "bedroom\tnarnia\t1\n";
+  }
+  try {
+    CommonsensePriors::load(dir, enc);
+    FAIL() << "unknown room accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("room_adjacency.tsv"), std::string::npos) << e.what();
+  }
+  fs::remove(dir / "room_adjacency.tsv");
+  EXPECT_THROW(CommonsensePriors::load(dir, enc), InputError);
+  fs::remove_all(dir);
+}
+
+TEST(Instruction, NamedObjects) {
+  const auto& P = *priors();
+  for (const char* text : {"bed", "find a bed", "Find the BED!", "go to the bed please"}) {
+    const Instruction I = interpretInstruction(text, P);
+    EXPECT_EQ(I.how, "named") << text;
+    ASSERT_EQ(I.targets.size(), 1u) << text;
+    EXPECT_EQ(I.targets[0], "bed") << text;
+    EXPECT_TRUE(I.room.empty()) << text;
+  }
+  EXPECT_EQ(interpretInstruction("a dining table", P).targets.at(0), "dining table");
+}
+
+TEST(Instruction, RoomConstraint) {
+  const Instruction I = interpretInstruction("the sofa in the living room", *priors());
+  ASSERT_EQ(I.targets.size(), 1u);
+  EXPECT_EQ(I.targets[0], "sofa");
+  EXPECT_EQ(I.room, "living room");
+  const Instruction K = interpretInstruction("go to the kitchen", *priors());
+  EXPECT_EQ(K.how, "room_only");
+  EXPECT_TRUE(K.targets.empty());
+  EXPECT_EQ(K.room, "kitchen");
+}
+
+TEST(Instruction, FunctionalRequestsFindTheirCategoriesThroughGlosses) {
+  const Instruction S = interpretInstruction("somewhere to sleep", *priors());
+  EXPECT_EQ(S.how, "functional");
+  ASSERT_FALSE(S.targets.empty());
+  EXPECT_EQ(S.targets, std::vector<std::string>{"bed"});  // not the pillow of a "sleeping person"
+  EXPECT_EQ(S.room_hint, "bedroom");
+  const Instruction M = interpretInstruction("I want to attend a meeting", *priors(), {"chair", "conference table", "bed"});
+  EXPECT_EQ(M.how, "functional");
+  EXPECT_TRUE(contains(M.targets, "conference table"));
+  EXPECT_FALSE(contains(M.targets, "bed"));
+  EXPECT_EQ(M.room_hint, "meeting room");
+}
+
+TEST(Instruction, UnknownWordsAreKeptLiterallyAndEmptyIsRejected) {
+  const Instruction Z = interpretInstruction("find the zorblax", *priors());
+  EXPECT_EQ(Z.how, "literal");
+  EXPECT_EQ(Z.targets, std::vector<std::string>{"zorblax"});
+  EXPECT_THROW(interpretInstruction("", *priors()), InputError);
+  EXPECT_THROW(interpretInstruction("  find a  ", *priors()), InputError);
+  EXPECT_EQ(stemWord("sleeping"), "sleep");
+  EXPECT_EQ(stemWord("meals"), "meal");
+  EXPECT_EQ(instructionWords("Find a BED, now!"), (std::vector<std::string>{"find", "a", "bed", "now"}));
+}
