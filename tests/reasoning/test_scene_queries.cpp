@@ -1,0 +1,138 @@
+// goto / ask on a hand-made scene graph of two rooms joined by a door: the request picks the
+// right region, the route follows the graph through the door, the CLI flies it without a
+// collision, and questions are answered from the graph.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "support/paths.hpp"
+#include "support/test_worlds.hpp"
+#include "ussnav/reasoning/builtin_reasoner.hpp"
+#include "ussnav/reasoning/scene_queries.hpp"
+#include "ussnav/scene_graph/io.hpp"
+#include "ussnav/sim/world_io.hpp"
+
+using namespace ussnav;
+
+namespace {
+
+std::shared_ptr<const CommonsensePriors> priors() {
+  static const auto p = CommonsensePriors::load(CommonsensePriors::defaultDir(), makeTextEncoder("wordnet"));
+  return p;
+}
+
+// Nodes along y = 2 at flight height through the door of test::twoRooms (x = 5, y 1.5..2.5),
+// region 0 = room A (x < 5), region 1 = room B; a fridge and a stove in A, a conference table
+// and chairs in B; a dead-end node in A's corner tempts a straight line through the wall.
+SceneGraph twoRoomGraph() {
+  SceneGraph g;
+  const std::vector<Vec3> pts{{1.0, 1.0, 1.2}, {2.5, 2.0, 1.2}, {4.0, 2.0, 1.2}, {5.0, 2.0, 1.2},
+                              {6.0, 2.0, 1.2}, {7.5, 2.0, 1.2}, {9.0, 1.0, 1.2}, {4.3, 3.5, 1.2}};
+  for (size_t i = 0; i < pts.size(); ++i) {
+    SgNode n;
+    n.id = int(i);
+    n.centroid = pts[i];
+    n.radius = 0.6;
+    g.nodes.push_back(n);
+  }
+  for (auto [a, b] : std::vector<std::pair<int, int>>{{0, 1}, {1, 2}, {2, 3}, {3, 4}, {4, 5}, {5, 6}, {2, 7}})
+    g.edges.push_back({a, b, "overlap", 1.0});
+  g.regions.push_back({0, {0, 1, 2, 3, 7}, "", "", Vec3(3.0, 2.0, 1.2), {1}});
+  g.regions.push_back({1, {4, 5, 6}, "", "", Vec3(7.5, 1.7, 1.2), {0}});
+  auto obj = [&](int id, const std::string& label, Vec3 c) {
+    SgObject o;
+    o.id = id;
+    o.label = label;
+    o.centroid = c;
+    o.bbox_min = c - Vec3(0.3, 0.3, 0.3);
+    o.bbox_max = c + Vec3(0.3, 0.3, 0.3);
+    o.n_observations = 5;
+    g.objects.push_back(o);
+  };
+  obj(1, "fridge", Vec3(0.6, 3.3, 0.9));
+  obj(2, "stove", Vec3(3.5, 3.5, 0.45));
+  obj(3, "conference table", Vec3(8.6, 3.0, 0.4));
+  obj(4, "chair", Vec3(8.0, 3.2, 0.45));
+  return g;
+}
+
+}  // namespace
+
+TEST(SceneQueries, RequestPicksTheRegionThatServesIt) {
+  const SceneGraph g = twoRoomGraph();
+  BuiltinReasoner R(priors());
+  const auto sem = graphSemantics(g, &R);
+  EXPECT_EQ(sem.at(0).label, "kitchen");
+  const Instruction meet = interpretInstruction("I want to attend a meeting", *priors(), graphVocabulary(g));
+  const RegionPick p = pickRegionForRequest(g, meet, sem, *priors());
+  EXPECT_EQ(p.region, 1) << p.reason;
+  EXPECT_EQ(p.object, 3);
+  EXPECT_NEAR(p.goal.x(), 8.6, 1e-9);
+  const Instruction cook = interpretInstruction("the fridge", *priors(), graphVocabulary(g));
+  EXPECT_EQ(pickRegionForRequest(g, cook, sem, *priors()).region, 0);
+  // A room asked for by name: the region labelled so, its node nearest its centroid.
+  const Instruction kitchen = interpretInstruction("go to the kitchen", *priors(), graphVocabulary(g));
+  const RegionPick k = pickRegionForRequest(g, kitchen, sem, *priors());
+  EXPECT_EQ(k.region, 0);
+  EXPECT_EQ(k.object, -1);
+}
+
+TEST(SceneQueries, RouteFollowsTheGraphThroughTheDoor) {
+  const SceneGraph g = twoRoomGraph();
+  const auto r = routeOnSceneGraph(g, Vec3(2.5, 2.0, 1.2), Vec3(9.0, 1.2, 1.2));
+  ASSERT_TRUE(r.has_value());
+  // from, nodes 1..6, to
+  ASSERT_EQ(r->size(), 8u);
+  EXPECT_TRUE(r->front().isApprox(Vec3(2.5, 2.0, 1.2)));
+  EXPECT_TRUE((*r)[3].isApprox(Vec3(5.0, 2.0, 1.2)));  // the door node
+  // Disconnected graph: no route.
+  SceneGraph cut = g;
+  cut.edges.erase(cut.edges.begin() + 3);  // 3-4: the door
+  EXPECT_FALSE(routeOnSceneGraph(cut, Vec3(2.5, 2.0, 1.2), Vec3(9.0, 1.2, 1.2)).has_value());
+}
+
+TEST(SceneQueries, AnswersQuestionsFromTheGraph) {
+  const SceneGraph g = twoRoomGraph();
+  BuiltinReasoner R(priors());
+  const auto sem = graphSemantics(g, &R);
+  const std::string here = answerQuestion(g, "Describe the current area", Vec3(2.0, 2.0, 1.2), sem, *priors());
+  EXPECT_NE(here.find("region 0 (kitchen)"), std::string::npos) << here;
+  EXPECT_NE(here.find("fridge"), std::string::npos) << here;
+  EXPECT_EQ(here.find("conference table"), std::string::npos) << here;
+  const std::string where = answerQuestion(g, "Where is the fridge?", std::nullopt, sem, *priors());
+  EXPECT_NE(where.find("fridge (object 1) is at (0.6, 3.3) in region 0"), std::string::npos) << where;
+  const std::string none = answerQuestion(g, "Is there a bed?", std::nullopt, sem, *priors());
+  EXPECT_NE(none.find("No bed"), std::string::npos) << none;
+  const std::string layout = answerQuestion(g, "Describe the layout", std::nullopt, sem, *priors());
+  EXPECT_NE(layout.find("2 regions and 4 objects"), std::string::npos) << layout;
+}
+
+TEST(SceneQueriesCli, GotoFliesToTheMeetingRoomAndAskAnswers) {
+  const auto dir = test::tempDir("goto_cli");
+  SceneGraph g = twoRoomGraph();
+  saveSceneGraph(dir / "sg.json", g);
+  saveWorld(test::twoRooms(true), dir / "w.json");
+  std::string out;
+  const std::string base = test::cliPath() + " --quiet ";
+  const int rc = test::runCommand(base + "goto --graph " + (dir / "sg.json").string() + " --world " + (dir / "w.json").string() +
+                                      " --request \"I want to attend a meeting\" --out " + (dir / "goto.json").string(),
+                                  &out);
+  ASSERT_EQ(rc, 0) << out;
+  const auto j = nlohmann::json::parse(std::ifstream(dir / "goto.json"));
+  EXPECT_EQ(j["region"], 1);
+  EXPECT_EQ(j["object"], 3);
+  EXPECT_EQ(j["collisions"], 0);
+  EXPECT_TRUE(j["arrived"].get<bool>());
+  EXPECT_EQ(j["final_region"], 1);
+  EXPECT_GT(j["path_length_m"].get<double>(), 5.0);
+  ASSERT_EQ(test::runCommand(base + "ask --graph " + (dir / "sg.json").string() + " --question \"where is the conference table\"", &out), 0);
+  EXPECT_NE(out.find("conference table (object 3)"), std::string::npos) << out;
+  // Bad input: a graph without regions, a malformed point.
+  g.regions.clear();
+  saveSceneGraph(dir / "empty.json", g);
+  EXPECT_NE(test::runCommand(base + "ask --graph " + (dir / "empty.json").string() + " --question x", &out), 0);
+  EXPECT_NE(out.find("no regions"), std::string::npos) << out;
+  EXPECT_NE(test::runCommand(base + "ask --graph " + (dir / "sg.json").string() + " --question x --at 1,b", &out), 0);
+  EXPECT_NE(out.find("--at"), std::string::npos) << out;
+}
