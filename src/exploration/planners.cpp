@@ -109,6 +109,7 @@ class FullPlanner final : public ExplorationPlanner {
       if (rc.targets == 0) rc.region = t.region, rc.cost_s = costs[i].cost_s;
       ++rc.targets;
       rc.gain += t.gain;
+      if (t.kind == TargetKind::Frontier) rc.frontier_gain += t.gain;
       rc.cost_s = std::min(rc.cost_s, costs[i].cost_s);
     }
     if (by_region.empty()) return c;

@@ -62,6 +62,7 @@ int CoarseDecider::choose(const PlanInput& in, const std::vector<RegionCandidate
     if (auto c = candidate(s.id); c != candidates.end()) {
       r.frontiers = c->targets;
       r.gain = c->gain;
+      r.frontier_gain = c->frontier_gain;
       r.cost_s = c->cost_s;
       r.distance_m = c->cost_s * speed;
     }

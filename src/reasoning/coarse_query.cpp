@@ -22,7 +22,8 @@ nlohmann::json toJson(const CoarseQuery& q) {
                        {"adjacent", r.adjacent},
                        {"objects", r.objects},
                        {"frontiers", r.frontiers},
-                       {"frontier_gain", r2(r.gain)},
+                       {"frontier_gain", r2(r.frontier_gain)},
+                       {"unseen_gain", r2(r.gain - r.frontier_gain)},
                        {"distance_m", r2(r.distance_m)},
                        {"visits", r.visits}});
   nlohmann::json prior = nlohmann::json::array();

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "ussnav/core/error.hpp"
+#include "ussnav/perception/wordnet.hpp"
 
 namespace ussnav {
 namespace {
@@ -226,9 +227,17 @@ std::vector<double> CommonsensePriors::roomsGivenObject(const std::string& label
   }
   std::vector<double> sum(rooms_.size(), 0.0);
   int n = 0;
-  // Exact category words first; otherwise every row within match_cosine of the label.
+  // Exact category words (or aliases) first, for the label or a WordNet synonym of it ("tv" ->
+  // "television", an alias of tv_monitor); otherwise every row within match_cosine of the label.
+  std::vector<std::string> keys{key};
+  for (const auto& syn : wordnet::synonymsOf(key)) keys.push_back(lower(syn));
+  auto named = [&](const Row& r) {
+    for (const auto& k : keys)
+      if (std::find(r.names.begin(), r.names.end(), k) != r.names.end()) return true;
+    return false;
+  };
   for (const Row& r : rows_)
-    if (std::find(r.names.begin(), r.names.end(), key) != r.names.end()) {
+    if (named(r)) {
       for (size_t k = 0; k < sum.size(); ++k) sum[k] += r.p[k];
       ++n;
     }

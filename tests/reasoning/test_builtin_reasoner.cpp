@@ -128,9 +128,11 @@ TEST(CoarseQuery, SerialisesTheDocumentedSchema) {
   EXPECT_EQ(j["visit_history"], nlohmann::json::array({1, 3}));
   ASSERT_EQ(j["regions"].size(), 4u);
   const auto& r = j["regions"][0];
-  for (const char* k : {"id", "label", "description", "adjacent", "objects", "frontiers", "frontier_gain", "distance_m", "visits"})
+  for (const char* k : {"id", "label", "description", "adjacent", "objects", "frontiers", "frontier_gain", "unseen_gain",
+                        "distance_m", "visits"})
     EXPECT_TRUE(r.contains(k)) << k;
-  EXPECT_EQ(r.size(), 9u);
+  EXPECT_EQ(r.size(), 10u);
+  EXPECT_EQ(r["unseen_gain"], 100.0);  // state() puts all gain in unseen patches
   EXPECT_EQ(r["label"], "kitchen");
   EXPECT_EQ(r["objects"], nlohmann::json::array({"fridge", "microwave", "sink"}));
   EXPECT_EQ(j["room_adjacency_prior"][0], nlohmann::json::array({"hallway", "bedroom", 1.0}));

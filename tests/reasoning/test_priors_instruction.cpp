@@ -46,6 +46,8 @@ TEST(Priors, ObjectsPointToTheirRooms) {
   EXPECT_EQ(mostLikelyRoom("refrigerator"), "kitchen");  // a synonym, through the text encoder
   EXPECT_EQ(mostLikelyRoom("couch"), "living room");     // sofa's synonym
   EXPECT_EQ(mostLikelyRoom("shower"), "bathroom");
+  EXPECT_EQ(mostLikelyRoom("tv"), mostLikelyRoom("television"));  // a WordNet synonym of an alias
+  EXPECT_FALSE(priors()->roomsGivenObject("tv").empty());
   const auto row = priors()->roomsGivenObject("bed");
   double sum = 0.0;
   for (double p : row) sum += p;

@@ -85,6 +85,7 @@ struct RegionCandidate {
   double gain = 0.0;
   double cost_s = 0.0;       // cheapest target in it
   double utility = 0.0;      // gain / cost
+  double frontier_gain = 0.0;  // part of `gain` from frontier targets (the rest: unseen patches)
 };
 using RegionChooser = std::function<int(const PlanInput&, const std::vector<RegionCandidate>&)>;
 

@@ -25,6 +25,8 @@ struct RegionState {
   std::vector<std::string> objects; // labels
   int frontiers = 0;                // exploration targets in it
   double gain = 0.0;                // their summed gain
+  double frontier_gain = 0.0;       // of that, frontiers' (they look beyond the region; the rest
+                                    // is known-but-unseen space inside it)
   double cost_s = -1.0;             // to its cheapest target, s; -1 = no target
   double distance_m = -1.0;         // path length to it, m; -1 = no target
   int visits = 0;                   // times the UAV entered it
