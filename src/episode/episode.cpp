@@ -346,13 +346,28 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
         last_check = t;
         targets.clear();
         for (const Frontier& fr : frontiers.frontiers()) {
-          if (fr.viewpoints.empty() || blacklisted(fr.centroid)) continue;
+          if (blacklisted(fr.centroid)) continue;
           ExplorationTarget tg;
           tg.kind = TargetKind::Frontier;
           tg.source_id = fr.id;
           tg.centroid = fr.centroid;
           tg.viewpoints = fr.viewpoints;
-          tg.gain = fr.viewpoints.front().gain * 1.0;
+          if (tg.viewpoints.empty()) {
+            // Viewpoints are computed while the frontier is in the rolling window; one found
+            // at the window's edge may have none. Fly to the graph node nearest to it (within
+            // 3 m), facing it, at half its cell count: there the window covers it again and
+            // its viewpoints are recomputed when its cells change (or it is skipped as reached).
+            const int n = graph.size() > 0 ? graph.nearestNode(fr.centroid) : -1;
+            if (n < 0) continue;
+            Viewpoint v;
+            v.position = graph.node(n).center;
+            if ((v.position.head<2>() - fr.centroid.head<2>()).norm() > 3.0) continue;
+            v.position.z() = flight_z;
+            v.yaw = std::atan2(fr.centroid.y() - v.position.y(), fr.centroid.x() - v.position.x());
+            v.gain = int(fr.cells.size() / 2);
+            tg.viewpoints.push_back(v);
+          }
+          tg.gain = tg.viewpoints.front().gain * 1.0;
           targets.push_back(std::move(tg));
         }
         std::vector<UnseenPatch> patches = camera.patches();
