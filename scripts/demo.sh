@@ -19,4 +19,6 @@ mkdir -p "$OUT"
 "$USSNAV" explore --world "$OUT/world.json" --goal "$GOAL" --planner "$PLANNER" --seed 1 --out "$OUT"
 "$USSNAV" graph stats "$OUT/scene_graph.json"
 echo
+"$USSNAV" ask --graph "$OUT/scene_graph.json" --question "Describe the layout"
+echo
 echo "demo: results in $OUT/ (world.png, topdown.png, result.json, scene_graph.json, trajectory.csv)"
