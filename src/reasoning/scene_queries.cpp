@@ -191,7 +191,7 @@ std::string answerQuestion(const SceneGraph& g, const std::string& question, con
   if (has({"layout", "rooms", "regions", "building", "map", "overview"}) || !at) {
     out << "The map has " << summaries.size() << " regions and " << g.objects.size() << " objects.";
     for (const RegionSummary& s : summaries) {
-      out << " " << regionName(s.id, sem) << ": " << s.objects.size() << " objects";
+      out << " " << regionName(s.id, sem) << ": " << s.objects.size() << (s.objects.size() == 1 ? " object" : " objects");
       if (!s.adjacent.empty()) {
         out << ", next to";
         for (int a : s.adjacent) out << " " << a;
