@@ -2,8 +2,9 @@
 
 #include "ussnav/reasoning/builtin_reasoner.hpp"
 
+#include "ussnav/core/timing.hpp"
+
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -116,7 +117,7 @@ double BuiltinReasoner::targetChance(const CoarseQuery& q, const RegionState& r)
 }
 
 CoarseDecision BuiltinReasoner::chooseRegion(const CoarseQuery& q) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch sw;
   CoarseDecision d;
   double best = -1.0;
   double best_s = 0.0;
@@ -139,7 +140,7 @@ CoarseDecision BuiltinReasoner::chooseRegion(const CoarseQuery& q) {
         << ", " << r->frontiers << " targets, " << r->cost_s << " s away";
     d.reason = why.str();
   }
-  d.latency_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  d.latency_ms = sw.ms();
   return d;
 }
 

@@ -2,16 +2,15 @@
 
 #include "ussnav/reasoning/coarse_decider.hpp"
 
+#include "ussnav/core/timing.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 namespace ussnav {
 
-nlohmann::json latencySummary(std::vector<double> ms) {
-  if (ms.empty()) return {{"median", 0.0}, {"p95", 0.0}, {"count", 0}};
-  std::sort(ms.begin(), ms.end());
-  auto q = [&](double f) { return ms[std::min(ms.size() - 1, size_t(f * double(ms.size() - 1) + 0.5))]; };
-  return {{"median", q(0.5)}, {"p95", q(0.95)}, {"count", ms.size()}};
+nlohmann::json latencySummary(const std::vector<double>& ms) {
+  return {{"median", percentile(ms, 0.5)}, {"p95", percentile(ms, 0.95)}, {"count", ms.size()}};
 }
 
 CoarseDecider::CoarseDecider(std::shared_ptr<Reasoner> reasoner, std::shared_ptr<const CommonsensePriors> priors,

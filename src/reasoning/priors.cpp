@@ -73,19 +73,7 @@ void normalise(std::vector<double>& v) {
 
 std::string categoryWords(const std::string& name) {
   std::string out;
-  for (size_t i = 0; i < name.size(); ++i) {
-    const char c = name[i];
-    if (c == '_' || c == '-' || c == ' ') {
-      if (!out.empty() && out.back() != ' ') out += ' ';
-      continue;
-    }
-    const bool up = std::isupper(static_cast<unsigned char>(c));
-    const bool prev_lower = i > 0 && std::islower(static_cast<unsigned char>(name[i - 1]));
-    const bool next_lower = i + 1 < name.size() && std::islower(static_cast<unsigned char>(name[i + 1]));
-    const bool prev_upper = i > 0 && std::isupper(static_cast<unsigned char>(name[i - 1]));
-    if (up && !out.empty() && out.back() != ' ' && (prev_lower || (prev_upper && next_lower))) out += ' ';
-    out += char(std::tolower(static_cast<unsigned char>(c)));
-  }
+  for (const auto& t : wordnet::labelTokens(name)) out += (out.empty() ? "" : " ") + t;
   return out;
 }
 

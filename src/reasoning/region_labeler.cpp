@@ -2,7 +2,7 @@
 
 #include "ussnav/reasoning/region_labeler.hpp"
 
-#include <chrono>
+#include "ussnav/core/timing.hpp"
 
 namespace ussnav {
 
@@ -53,9 +53,9 @@ void RegionLabeler::offer(const std::vector<RegionSummary>& regions, double t) {
 }
 
 void RegionLabeler::label(const Request& r) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch sw;
   RegionSemantics s = reasoner_->labelRegion(r.region);
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  const double ms = sw.ms();
   s.key = r.key;
   std::lock_guard<std::mutex> lock(mutex_);
   ++stats_.requests;

@@ -60,7 +60,7 @@ class CoarseDecider {
   Stats stats_;
 };
 
-// {median, p95, count} of a sample (0s when empty).
-nlohmann::json latencySummary(std::vector<double> ms);
+// {median, p95, count} of a sample (core/timing.hpp percentile; 0s when empty).
+nlohmann::json latencySummary(const std::vector<double>& ms);
 
 }  // namespace ussnav

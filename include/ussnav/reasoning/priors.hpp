@@ -73,7 +73,8 @@ class CommonsensePriors {
   mutable std::map<std::string, std::vector<double>> cache_;
 };
 
-// "ArmChair" -> "arm chair", "tv_monitor" -> "tv monitor", "TVStand" -> "tv stand".
+// "ArmChair" -> "arm chair", "tv_monitor" -> "tv monitor", "TVStand" -> "tv stand" (the words of
+// wordnet::labelTokens joined by spaces).
 std::string categoryWords(const std::string& name);
 
 }  // namespace ussnav
