@@ -27,6 +27,7 @@ GraphDistances::GraphDistances(const ConnectivityGraph& g, const OccupancyMap& m
     if (d > dist_[size_t(u)]) continue;
     for (int ei : g.node(u).edges) {
       const ScgEdge& e = g.edges()[size_t(ei)];
+      if (e.blocked) continue;
       const int v = e.a == u ? e.b : e.a;
       const double nd = d + e.length;
       if (nd < dist_[size_t(v)]) dist_[size_t(v)] = nd, pq.emplace(nd, v);

@@ -47,7 +47,10 @@ MapperFrameReport Mapper::process(const MapperFrame& f) {
   }
   if (opt_.skeleton) {
     const Stopwatch sw;
-    rep.graph = graph_.update(grid_, f.pose.position, f.time);
+    new_occupied_.clear();
+    for (const VoxelChange& c : grid_.changes())
+      if (c.after == VoxelState::Occupied) new_occupied_.push_back(c.key);
+    rep.graph = graph_.update(grid_, f.pose.position, f.time, new_occupied_);
     times_.add("skeleton", sw.ms());
   }
   // Nodes and edges are only ever appended, so a size change is exactly "the graph changed",

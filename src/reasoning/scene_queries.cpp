@@ -116,7 +116,7 @@ std::optional<std::vector<Vec3>> routeOnSceneGraph(const SceneGraph& g, const Ve
   std::vector<std::vector<std::pair<int, double>>> adj(g.nodes.size());
   for (const SgEdge& e : g.edges) {
     const int i = g.nodeIndex(e.a), j = g.nodeIndex(e.b);
-    if (i < 0 || j < 0) continue;
+    if (i < 0 || j < 0 || e.blocked) continue;
     const double d = (g.nodes[size_t(i)].centroid - g.nodes[size_t(j)].centroid).norm();
     adj[size_t(i)].push_back({j, d});
     adj[size_t(j)].push_back({i, d});

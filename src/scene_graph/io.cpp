@@ -101,7 +101,8 @@ json toJson(const SceneGraph& g) {
   }
   j["nodes"] = nodes;
   json edges = json::array();
-  for (const auto& e : g.edges) edges.push_back({{"a", e.a}, {"b", e.b}, {"type", e.type}, {"weight", e.weight}});
+  for (const auto& e : g.edges)
+    edges.push_back({{"a", e.a}, {"b", e.b}, {"type", e.type}, {"weight", e.weight}, {"blocked", e.blocked}});
   j["edges"] = edges;
   json regions = json::array();
   for (const auto& r : g.regions)
@@ -151,7 +152,11 @@ SceneGraph sceneGraphFromJson(const json& j, const std::string& src) {
   const json& edges = top.array("edges");
   for (size_t i = 0; i < edges.size(); ++i) {
     const Reader r(src, edges[i], item("edges", i));
-    SgEdge e{r.integer("a"), r.integer("b"), r.string("type"), r.number("weight")};
+    SgEdge e{r.integer("a"), r.integer("b"), r.string("type"), r.number("weight"), false};
+    if (const auto it = edges[i].find("blocked"); it != edges[i].end()) {  // optional, default false
+      if (!it->is_boolean()) r.fail(r.name("blocked"), "true or false");
+      e.blocked = it->get<bool>();
+    }
     for (const char* end : {"a", "b"}) {
       const int id = std::string(end) == "a" ? e.a : e.b;
       if (!node_ids.count(id)) throw InputError(src, r.name(end), "unknown node id " + std::to_string(id));

@@ -39,7 +39,7 @@ SceneGraph buildSceneGraph(const Mapper& m, double time, const std::string& sour
   for (const ScgNode& n : cg.nodes())
     g.nodes.push_back({n.id, n.center, n.reach, hullVertices(n.polyhedron), n.created_time});
   g.edges.reserve(cg.edges().size());
-  for (const ScgEdge& e : cg.edges()) g.edges.push_back({e.a, e.b, edgeTypeName(e.type), e.weight});
+  for (const ScgEdge& e : cg.edges()) g.edges.push_back({e.a, e.b, edgeTypeName(e.type), e.weight, e.blocked});
   for (const auto& [id, r] : m.regions().regions())
     g.regions.push_back({id, r.nodes, "", "", r.centroid, r.adjacent});
   if (const ObjectLayer* ol = m.objects())

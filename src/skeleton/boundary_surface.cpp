@@ -47,6 +47,11 @@ BoundarySurface makeBoundarySurface(const Polyhedron& p, std::vector<int> faces)
     weighted_centroid = s.center;
   }
   s.nexus = s.center - (s.center - weighted_centroid).dot(s.normal) * s.normal;
+  std::vector<std::pair<double, int>> free_verts;
+  for (int v : verts)
+    if (p.kinds[size_t(v)] == VertexKind::Free) free_verts.emplace_back((p.points[size_t(v)] - s.nexus).norm(), v);
+  std::sort(free_verts.begin(), free_verts.end());
+  for (const auto& fv : free_verts) s.free_vertices.push_back(p.points[size_t(fv.second)]);
   return s;
 }
 

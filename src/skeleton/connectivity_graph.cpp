@@ -155,6 +155,7 @@ int ConnectivityGraph::addEdge(int a, int b, EdgeType type, double weight, std::
   const int id = int(edges_.size());
   edges_.push_back(std::move(e));
   edges_.back().length = polylineLength(edgePolyline(id));
+  max_edge_length_ = std::max(max_edge_length_, edges_.back().length);
   nodes_[size_t(a)].edges.push_back(id);
   nodes_[size_t(b)].edges.push_back(id);
   return id;

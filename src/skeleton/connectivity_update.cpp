@@ -2,6 +2,7 @@
 // and the parked (deferred) Boundary Surfaces persist between frames.
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "ussnav/core/error.hpp"
 #include "ussnav/core/timing.hpp"
@@ -17,12 +18,14 @@ constexpr int kMaxLoopAttempts = 2;
 }  // namespace
 
 GraphUpdateStats ConnectivityGraph::update(const OccupancyMap& map, const Vec3& uav_position,
-                                           double time) {
+                                           double time, const std::vector<Vec3i>& new_occupied) {
   if (!uav_position.allFinite() || !std::isfinite(time))
     throw InputError("", "uav_position", "expected a finite position and time for the graph update");
   const Stopwatch watch;
   ++frame_;
   GraphUpdateStats st;
+
+  noteNewObstacles(map, new_occupied, st);
 
   // Parked surfaces whose probe voxel has been observed may now lead somewhere: queue them.
   std::vector<Deferred> still_parked;
@@ -61,7 +64,12 @@ GraphUpdateStats ConnectivityGraph::update(const OccupancyMap& map, const Vec3& 
   // not: the budget counts expansions, with a generous cap on pops as a backstop.
   const int max_pops = 20 * cfg_.max_expansions_per_frame;
   int pops = 0;
-  while (!queue_.empty() && st.expansions < cfg_.max_expansions_per_frame && pops < max_pops) {
+  while (st.expansions < cfg_.max_expansions_per_frame && pops < max_pops) {
+    if (queue_.empty()) {
+      // Gap filling: only when the surfaces are done, so it never competes with them.
+      if (cfg_.gap_fill && fillOneGap(map, uav_position, time, st)) continue;
+      break;
+    }
     BoundarySurface s = std::move(queue_.front());
     queue_.pop_front();
     ++pops;
@@ -82,7 +90,7 @@ GraphUpdateStats ConnectivityGraph::update(const OccupancyMap& map, const Vec3& 
 
 int ConnectivityGraph::addNode(const OccupancyMap& map, const Vec3& seed, int parent,
                                const std::vector<Vec3>& hints, bool require_parent_link,
-                               double time, GraphUpdateStats& stats) {
+                               double time, GraphUpdateStats& stats, bool gap_seed) {
   ++stats.expansions;
   const bool unknown_blocks = cfg_.unknown_is_contact;
   Polyhedron poly = expandNewPolyhedron(map, seed, directions_, cfg_);
@@ -96,11 +104,12 @@ int ConnectivityGraph::addNode(const OccupancyMap& map, const Vec3& seed, int pa
   const Vec3& c = poly.centroid;
   if (map.stateAt(c) == VoxelState::Free &&
       !findUnsafeVoxel(map, c, cfg_.robot_radius, false, nullptr, nullptr) &&
-      lineOfSight(map, seed, c, unknown_blocks))
+      tubeOfSight(map, seed, c, cfg_.edge_clearance, unknown_blocks))
     center = c;
 
   // The centroid may have drifted next to an existing centre: the space is covered already.
-  if (require_parent_link && hasCenterWithin(center, cfg_.min_center_distance)) {
+  if (require_parent_link &&
+      hasCenterWithin(center, gap_seed ? cfg_.gap_min_center_distance : cfg_.min_center_distance)) {
     ++stats.rejected_polyhedra;
     return -1;
   }
@@ -112,14 +121,16 @@ int ConnectivityGraph::addNode(const OccupancyMap& map, const Vec3& seed, int pa
   bool linked = false;
   if (parent >= 0) {
     const Vec3 pc = nodes_[size_t(parent)].center;
-    if (lineOfSight(map, pc, center, false)) {
+    // Straight only through observed space (unseen space may hide a wall); the way through the
+    // hints was checked when each part was made.
+    if (tubeOfSight(map, pc, center, cfg_.edge_clearance, unknown_blocks)) {
       linked = true;
     } else {
       std::vector<Vec3> pts{pc};
       pts.insert(pts.end(), hints.begin(), hints.end());
       pts.push_back(center);
-      if (polylineClear(map, pts, false)) {
-        pts = shortcutPolyline(map, pts, false);
+      if (polylineClear(map, pts, false, cfg_.edge_clearance)) {
+        pts = shortcutPolyline(map, pts, false, cfg_.edge_clearance);
         via.assign(pts.begin() + 1, pts.end() - 1);
         linked = true;
       }
@@ -136,8 +147,16 @@ int ConnectivityGraph::addNode(const OccupancyMap& map, const Vec3& seed, int pa
   n.seed = seed;
   for (int v : poly.hullVertices()) n.reach = std::max(n.reach, (poly.points[size_t(v)] - center).norm());
   n.parent = linked ? parent : -1;
+  n.gap_seed = gap_seed;
   n.created_time = time;
   n.created_frame = frame_;
+  if (!cfg_.carve_obstacles) {
+    n.obstacles = obstacleVoxelsInside(map, poly);
+    if (n.obstacles.size() > kMaxNodeObstacles) {
+      n.obstacles.resize(kMaxNodeObstacles);
+      n.obstacles_overflow = true;
+    }
+  }
   n.polyhedron = std::move(poly);
   nodes_.push_back(std::move(n));
   const int id = int(nodes_.size()) - 1;
@@ -147,7 +166,9 @@ int ConnectivityGraph::addNode(const OccupancyMap& map, const Vec3& seed, int pa
   if (linked) {
     // A kinematic link without geometric adjacency is a forced link (paper Sec. IV-B).
     const bool adjacent = polyhedraIntersect(nodes_[size_t(parent)].polyhedron, nodes_[size_t(id)].polyhedron);
-    addEdge(parent, id, EdgeType::Kinematic, adjacent ? 1.0 : cfg_.forced_edge_weight, std::move(via));
+    // A gap seed's link is a line of sight, not a way the UAV flew.
+    addEdge(parent, id, gap_seed ? EdgeType::Visible : EdgeType::Kinematic,
+            adjacent ? 1.0 : cfg_.forced_edge_weight, std::move(via));
     ++stats.edges_added;
   }
   updateTopology(map, id, stats);
@@ -158,6 +179,112 @@ int ConnectivityGraph::addNode(const OccupancyMap& map, const Vec3& seed, int pa
     queue_.push_back(std::move(s));
   }
   return id;
+}
+
+void ConnectivityGraph::noteNewObstacles(const OccupancyMap& map, const std::vector<Vec3i>& new_occupied,
+                                         GraphUpdateStats& stats) {
+  const double h = 0.5 * map.resolution(), touch = kTouchFraction * map.resolution();
+  for (const Vec3i& k : new_occupied) {
+    const Vec3 c = map.centerOf(k);
+    for (int id : nodesWithin(c, max_reach_ + 2.0 * h)) {
+      ScgNode& n = nodes_[size_t(id)];
+      if (cubePenetration(n.polyhedron, c, h) <= touch) continue;
+      if (cfg_.carve_obstacles) {
+        // An obstacle at the centre itself (the map changed its mind there): record it.
+        std::optional<Polyhedron> cut = cutOutCube(n.polyhedron, c, h, n.center);
+        if (cut && cut->valid() && cut->contains(n.center)) {
+          n.polyhedron = std::move(*cut);
+          ++stats.recarved;
+          continue;
+        }
+      }
+      if (std::find(n.obstacles.begin(), n.obstacles.end(), c) != n.obstacles.end()) continue;
+      if (n.obstacles.size() < kMaxNodeObstacles)
+        n.obstacles.push_back(c);
+      else
+        n.obstacles_overflow = true;
+      ++stats.recarved;
+    }
+  }
+  // Edges whose polyline box meets the new obstacles' box: one walk through the map each.
+  if (new_occupied.empty() || edges_.empty()) return;
+  Aabb box;
+  for (const Vec3i& k : new_occupied) box.extend(map.centerOf(k));
+  box.min -= Vec3::Constant(h);
+  box.max += Vec3::Constant(h);
+  const Vec3 mid = 0.5 * (box.min + box.max);
+  std::vector<char> seen(edges_.size(), 0);
+  for (int id : nodesWithin(mid, 0.5 * (box.max - box.min).norm() + max_edge_length_))
+    for (int e : nodes_[size_t(id)].edges) {
+      ScgEdge& ed = edges_[size_t(e)];
+      if (seen[size_t(e)] || ed.blocked) continue;
+      seen[size_t(e)] = 1;
+      const std::vector<Vec3> poly = edgePolyline(e);
+      Aabb eb;
+      for (const Vec3& q : poly) eb.extend(q);
+      if ((eb.max.array() < box.min.array()).any() || (eb.min.array() > box.max.array()).any()) continue;
+      if (!polylineClear(map, poly, false)) {
+        ed.blocked = true;
+        ++stats.blocked_edges;
+      }
+    }
+}
+
+bool ConnectivityGraph::fillOneGap(const OccupancyMap& map, const Vec3& uav_position, double time,
+                                   GraphUpdateStats& stats) {
+  enum : uint8_t { kCovered = 1, kDone = 2 };
+  const double s = cfg_.gap_spacing, r = cfg_.gap_scan_radius;
+  const bool unknown_blocks = cfg_.unknown_is_contact;
+  const int tolerated = int(std::floor(cfg_.max_unknown_gap / map.resolution() + 1e-9));
+  auto latticeKey = [&](const Vec3i& k) { return cellKey(k); };
+  const Vec3i lo((uav_position - Vec3::Constant(r)).unaryExpr([&](double v) { return std::floor(v / s); }).cast<int>());
+  const Vec3i hi((uav_position + Vec3::Constant(r)).unaryExpr([&](double v) { return std::floor(v / s); }).cast<int>());
+  // Candidates nearest the UAV first (ties by key), so the order does not depend on the frame.
+  std::vector<std::pair<double, Vec3i>> cands;
+  for (int z = lo.z(); z <= hi.z(); ++z)
+    for (int y = lo.y(); y <= hi.y(); ++y)
+      for (int x = lo.x(); x <= hi.x(); ++x) {
+        const Vec3i k(x, y, z);
+        const Vec3 p = (k.cast<double>() + Vec3::Constant(0.5)) * s;
+        const double d = (p - uav_position).norm();
+        if (d > r || gap_settled_.count(latticeKey(k))) continue;
+        const Vec3i vk = map.keyOf(p);
+        if (!map.inWindow(vk) || map.state(vk) != VoxelState::Free) continue;
+        if (containingNode(p) >= 0) {
+          gap_settled_[latticeKey(k)] = kCovered;
+          continue;
+        }
+        cands.emplace_back(d, k);
+      }
+  std::sort(cands.begin(), cands.end(), [](const auto& a, const auto& b) {
+    return std::make_tuple(a.first, a.second.x(), a.second.y(), a.second.z()) <
+           std::make_tuple(b.first, b.second.x(), b.second.y(), b.second.z());
+  });
+  for (const auto& [d, k] : cands) {
+    const Vec3 p = (k.cast<double>() + Vec3::Constant(0.5)) * s;
+    if (hasCenterWithin(p, cfg_.gap_min_center_distance)) {
+      gap_settled_[latticeKey(k)] = kDone;
+      continue;
+    }
+    VoxelState bad = VoxelState::Free;
+    if (findUnsafeVoxel(map, p, std::max(cfg_.robot_radius, cfg_.gap_clearance), unknown_blocks, nullptr, &bad,
+                        tolerated)) {
+      if (bad == VoxelState::Occupied) gap_settled_[latticeKey(k)] = kDone;
+      continue;  // unknown nearby: it may clear later
+    }
+    int parent = -1;
+    for (int id : nodesWithin(p, cfg_.visibility_radius))
+      if (tubeOfSight(map, nodes_[size_t(id)].center, p, cfg_.edge_clearance, unknown_blocks)) {
+        parent = id;
+        break;
+      }
+    if (parent < 0) continue;  // no node in sight yet
+    gap_settled_[latticeKey(k)] = kDone;
+    ++stats.gap_seeds;
+    addNode(map, p, parent, {p}, true, time, stats, true);
+    return true;
+  }
+  return false;
 }
 
 // Lines 10-14: ConnectCollidingNbrs and ConnectVisibleNbrs (ConnectToParent is done by addNode).
@@ -176,7 +303,7 @@ void ConnectivityGraph::updateTopology(const OccupancyMap& map, int id, GraphUpd
     const bool overlap = dist <= reach + o.reach &&
                          polyhedraIntersect(nodes_[size_t(id)].polyhedron, o.polyhedron);
     if (!overlap && dist > cfg_.visibility_radius) continue;
-    if (lineOfSight(map, o.center, center, unknown_blocks)) {
+    if (tubeOfSight(map, o.center, center, cfg_.edge_clearance, unknown_blocks)) {
       addEdge(other, id, overlap ? EdgeType::Overlap : EdgeType::Visible, 1.0, {});
       ++stats.edges_added;
       continue;
@@ -193,7 +320,7 @@ void ConnectivityGraph::updateTopology(const OccupancyMap& map, int id, GraphUpd
     if (loop_attempts++ >= kMaxLoopAttempts) continue;
     // Cells of about the robot radius: far cheaper, and a gap they miss is too narrow to fly.
     const int cell = std::max(1, int(cfg_.robot_radius / map.resolution() + 1e-9));
-    const auto path = gridPath(map, o.center, center, cfg_.loop_path_max, unknown_blocks, cell);
+    const auto path = gridPath(map, o.center, center, cfg_.loop_path_max, unknown_blocks, cell, cfg_.edge_clearance);
     if (!path) continue;
     std::vector<Vec3> via(path->begin() + 1, path->end() - 1);
     if (overlap)

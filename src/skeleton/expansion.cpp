@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 #include "ussnav/skeleton/connectivity_graph.hpp"
 
@@ -113,7 +114,48 @@ Polyhedron expandNewPolyhedron(const OccupancyMap& map, const Vec3& seed,
       kinds.push_back(VertexKind::Free);
     }
   }
-  return buildPolyhedron(std::move(pts), std::move(kinds));
+  Polyhedron poly = buildPolyhedron(std::move(pts), std::move(kinds));
+  if (cfg.carve_obstacles) poly = carveObstacles(map, std::move(poly), seed, cfg.max_carve_cuts);
+  return poly;
+}
+
+
+std::vector<Vec3> obstacleVoxelsInside(const OccupancyMap& map, const Polyhedron& poly) {
+  std::vector<Vec3> out;
+  if (!poly.valid()) return out;
+  const double res = map.resolution(), h = 0.5 * res;
+  const Vec3i lo = map.keyOf(poly.bounds.min), hi = map.keyOf(poly.bounds.max);
+  for (int z = lo.z(); z <= hi.z(); ++z)
+    for (int y = lo.y(); y <= hi.y(); ++y)
+      for (int x = lo.x(); x <= hi.x(); ++x) {
+        const Vec3i k(x, y, z);
+        if (map.state(k) != VoxelState::Occupied) continue;
+        const Vec3 c = map.centerOf(k);
+        if (cubePenetration(poly, c, h) > kTouchFraction * res) out.push_back(c);
+      }
+  return out;
+}
+
+Polyhedron carveObstacles(const OccupancyMap& map, Polyhedron poly, const Vec3& seed, int max_cuts) {
+  if (!poly.valid() || max_cuts <= 0) return poly;
+  const double res = map.resolution(), h = 0.5 * res, touch = kTouchFraction * res;
+  std::vector<std::pair<double, Vec3>> inside;  // (distance to the seed, voxel centre)
+  for (const Vec3& c : obstacleVoxelsInside(map, poly)) inside.emplace_back((c - seed).norm(), c);
+  // Nearest first: a cut for a near voxel usually removes the ones behind it too.
+  std::sort(inside.begin(), inside.end(), [](const auto& a, const auto& b) {
+    return std::make_tuple(a.first, a.second.x(), a.second.y(), a.second.z()) <
+           std::make_tuple(b.first, b.second.x(), b.second.y(), b.second.z());
+  });
+  int cuts = 0;
+  for (const auto& [dist, c] : inside) {
+    if (cubePenetration(poly, c, h) <= touch) continue;
+    if (cuts++ >= max_cuts) return Polyhedron{};  // cannot make it obstacle-free
+    std::optional<Polyhedron> cut = cutOutCube(poly, c, h, seed);
+    if (!cut) return Polyhedron{};  // the seed touches the obstacle
+    poly = std::move(*cut);
+    if (!poly.valid()) return poly;
+  }
+  return poly;
 }
 
 bool findUnsafeVoxel(const OccupancyMap& map, const Vec3& p, double radius, bool unknown_unsafe,
@@ -213,19 +255,11 @@ SeedDecision findNewExpandSeed(const BoundarySurface& surface, const OccupancyMa
   // The nexus of a cluster that spans a wall and a door lies on the wall. Free vertices mark
   // where space does continue: retry along the owner's rays through the ones nearest the nexus.
   const ScgNode& owner = graph.node(surface.node);
-  const Polyhedron& p = owner.polyhedron;
-  std::vector<std::pair<double, int>> free_verts;
-  for (int f : surface.faces)
-    for (int v : p.faces[size_t(f)])
-      if (p.kinds[size_t(v)] == VertexKind::Free)
-        free_verts.emplace_back((p.points[size_t(v)] - surface.nexus).norm(), v);
-  std::sort(free_verts.begin(), free_verts.end());
-  free_verts.erase(std::unique(free_verts.begin(), free_verts.end()), free_verts.end());
   int tries = 0;
-  for (const auto& [dist, v] : free_verts) {
+  for (const Vec3& v : surface.free_vertices) {
     if (tries++ >= cfg.seed_retries) break;
-    const Vec3 dir = (p.points[size_t(v)] - owner.seed).normalized();
-    const SeedDecision alt = runCandidate(p.points[size_t(v)], dir, map, graph, cfg);
+    const Vec3 dir = (v - owner.seed).normalized();
+    const SeedDecision alt = runCandidate(v, dir, map, graph, cfg);
     if (alt.status == SeedStatus::Accepted) return alt;
   }
   return primary;

@@ -30,7 +30,14 @@ GraphStats graphStats(const ConnectivityGraph& g) {
   GraphStats s;
   s.nodes = int(g.size());
   s.edges = int(g.edges().size());
-  for (const ScgEdge& e : g.edges()) ++s.edges_by_type[size_t(e.type)];
+  for (const ScgEdge& e : g.edges()) {
+    ++s.edges_by_type[size_t(e.type)];
+    s.blocked_edges += e.blocked;
+  }
+  for (const ScgNode& n : g.nodes()) {
+    s.nodes_with_obstacles += !n.obstacles.empty() || n.obstacles_overflow;
+    s.gap_nodes += n.gap_seed;
+  }
   s.queued_surfaces = int(g.queuedSurfaces());
   s.deferred_surfaces = int(g.deferredSurfaces());
   s.mean_degree = s.nodes ? 2.0 * s.edges / s.nodes : 0.0;
@@ -48,7 +55,10 @@ nlohmann::json toJson(const GraphStats& s) {
           {"queued_surfaces", s.queued_surfaces},
           {"deferred_surfaces", s.deferred_surfaces},
           {"mean_degree", s.mean_degree},
-          {"components", s.components}};
+          {"components", s.components},
+          {"blocked_edges", s.blocked_edges},
+          {"nodes_with_obstacles", s.nodes_with_obstacles},
+          {"gap_nodes", s.gap_nodes}};
 }
 
 CoverageResult freeSpaceCoverage(const ConnectivityGraph& g, const OccupancyMap& map, double z_min,

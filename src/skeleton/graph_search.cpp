@@ -1,6 +1,7 @@
 #include "ussnav/skeleton/graph_search.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <queue>
 
@@ -11,6 +12,32 @@
 namespace ussnav {
 
 namespace {
+
+// Whether the segment from p to the node's centre misses every obstacle voxel recorded inside
+// the node's hull (slab test against each voxel cube).
+bool segmentAvoidsObstacles(const ScgNode& n, const Vec3& p, double res) {
+  if (n.obstacles_overflow) return false;
+  const Vec3 d = n.center - p;
+  const double h = 0.5 * res;
+  for (const Vec3& c : n.obstacles) {
+    double t0 = 0.0, t1 = 1.0;
+    bool hit = true;
+    for (int a = 0; a < 3 && hit; ++a) {
+      const double lo = c[a] - h - p[a], hi = c[a] + h - p[a];
+      if (std::abs(d[a]) < 1e-12) {
+        hit = lo <= 0.0 && hi >= 0.0;
+      } else {
+        double ta = lo / d[a], tb = hi / d[a];
+        if (ta > tb) std::swap(ta, tb);
+        t0 = std::max(t0, ta);
+        t1 = std::min(t1, tb);
+        hit = t0 <= t1;
+      }
+    }
+    if (hit) return false;
+  }
+  return true;
+}
 
 // Nodes that `p` can reach by a straight segment: first those in known free space, else those
 // only unobserved space separates (outside the window, say). Nearest first.
@@ -26,18 +53,34 @@ std::vector<int> attachNodes(const ConnectivityGraph& g, const OccupancyMap& map
   //    which holds wherever the map window has moved on.
   std::vector<int> inside;
   for (int id : near)
-    if (g.node(id).polyhedron.contains(p)) inside.push_back(id);
+    if (g.node(id).polyhedron.contains(p) && segmentAvoidsObstacles(g.node(id), p, map.resolution()))
+      inside.push_back(id);
   if (!inside.empty()) return inside;
   if (int(near.size()) > opt.attach_candidates) near.resize(size_t(opt.attach_candidates));
-  // 2. Line of sight through known free space; 3. only where the map knows nothing (outside
-  //    the window), a straight segment through unobserved space.
-  for (bool unknown_blocks : {true, false}) {
-    std::vector<int> out;
-    for (int id : near)
-      if (lineOfSight(map, p, g.node(id).center, unknown_blocks)) out.push_back(id);
-    if (!out.empty()) return out;
+  // 2. Line of sight through known free space.
+  std::vector<int> out;
+  for (int id : near)
+    if (tubeOfSight(map, p, g.node(id).center, g.config().edge_clearance, true)) out.push_back(id);
+  if (!out.empty()) return out;
+  // 3. Where the map knows nothing (outside the window, say): a straight segment that runs at
+  //    most unknown_attach_max outside the node's polyhedron — the rest lies in the convex free
+  //    space it covers — and meets no obstacle the map still holds.
+  for (int id : near) {
+    const ScgNode& n = g.node(id);
+    const Vec3 d = p - n.center;
+    const double len = d.norm();
+    if (len < 1e-9) return {id};
+    const Vec3 u = d / len;
+    double t_exit = len;
+    for (size_t f = 0; f < n.polyhedron.faces.size(); ++f) {
+      const double un = n.polyhedron.normals[f].dot(u);
+      if (un > 1e-12) t_exit = std::min(t_exit, -(n.polyhedron.normals[f].dot(n.center) + n.polyhedron.offsets[f]) / un);
+    }
+    if (len - std::max(0.0, t_exit) <= opt.unknown_attach_max && segmentAvoidsObstacles(n, p, map.resolution()) &&
+        tubeOfSight(map, p, n.center, g.config().edge_clearance, false))
+      out.push_back(id);
   }
-  return {};
+  return out;
 }
 
 }  // namespace
@@ -47,7 +90,8 @@ GraphPath findGraphPath(const ConnectivityGraph& g, const OccupancyMap& map, con
   GraphPath result;
   if (!start.allFinite() || !goal.allFinite())
     throw InputError("", "start/goal", "expected finite path end points");
-  if (lineOfSight(map, start, goal, true)) {
+  const double clearance = g.config().edge_clearance;
+  if (tubeOfSight(map, start, goal, clearance, true)) {
     result.found = true;
     result.points = {start, goal};
     result.length = (goal - start).norm();
@@ -95,8 +139,8 @@ GraphPath findGraphPath(const ConnectivityGraph& g, const OccupancyMap& map, con
     for (int e : g.node(u).edges) {
       const ScgEdge& ed = g.edges()[size_t(e)];
       const int v = ed.a == u ? ed.b : ed.a;
-      if (closed[size_t(v)]) continue;
-      if (edge_ok[size_t(e)] < 0) edge_ok[size_t(e)] = polylineClear(map, g.edgePolyline(e), false) ? 1 : 0;
+      if (closed[size_t(v)] || ed.blocked) continue;
+      if (edge_ok[size_t(e)] < 0) edge_ok[size_t(e)] = polylineClear(map, g.edgePolyline(e), false, clearance) ? 1 : 0;
       if (!edge_ok[size_t(e)]) continue;
       relax(v, cost[size_t(u)] + ed.length);
     }
@@ -118,7 +162,7 @@ GraphPath findGraphPath(const ConnectivityGraph& g, const OccupancyMap& map, con
   // Drop repeated points (start or goal on a node centre).
   pts.erase(std::unique(pts.begin(), pts.end(), [](const Vec3& a, const Vec3& b) { return (a - b).norm() < 1e-9; }),
             pts.end());
-  if (opt.shortcut) pts = shortcutPolyline(map, pts, true);
+  if (opt.shortcut) pts = shortcutPolyline(map, pts, true, clearance);
   result.found = true;
   result.nodes = std::move(chain);
   result.length = polylineLength(pts);

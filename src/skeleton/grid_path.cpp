@@ -13,21 +13,37 @@ double polylineLength(const std::vector<Vec3>& pts) {
   return len;
 }
 
-bool polylineClear(const OccupancyMap& map, const std::vector<Vec3>& pts, bool unknown_blocks) {
+bool tubeOfSight(const OccupancyMap& map, const Vec3& a, const Vec3& b, double clearance,
+                 bool unknown_blocks) {
+  if (!lineOfSight(map, a, b, unknown_blocks)) return false;
+  const Vec3 d = b - a;
+  if (clearance <= 0.0 || d.norm() < 1e-9) return true;
+  const Vec3 dir = d.normalized();
+  // Any unit vector not parallel to dir gives the two sideways directions.
+  const Vec3 other = std::abs(dir.z()) < 0.9 ? Vec3::UnitZ() : Vec3::UnitX();
+  const Vec3 u = dir.cross(other).normalized() * clearance;
+  const Vec3 v = dir.cross(u).normalized() * clearance;
+  for (const Vec3& o : {u, Vec3(-u), v, Vec3(-v)})
+    if (!lineOfSight(map, a + o, b + o, unknown_blocks)) return false;
+  return true;
+}
+
+bool polylineClear(const OccupancyMap& map, const std::vector<Vec3>& pts, bool unknown_blocks,
+                   double clearance) {
   for (size_t i = 1; i < pts.size(); ++i)
-    if (!lineOfSight(map, pts[i - 1], pts[i], unknown_blocks)) return false;
+    if (!tubeOfSight(map, pts[i - 1], pts[i], clearance, unknown_blocks)) return false;
   return true;
 }
 
 std::vector<Vec3> shortcutPolyline(const OccupancyMap& map, const std::vector<Vec3>& pts,
-                                   bool unknown_blocks) {
+                                   bool unknown_blocks, double clearance) {
   if (pts.size() <= 2) return pts;
   std::vector<Vec3> out{pts.front()};
   size_t i = 0;
   while (i + 1 < pts.size()) {
     size_t next = i + 1;
     for (size_t j = pts.size() - 1; j > i + 1; --j)
-      if (lineOfSight(map, pts[i], pts[j], unknown_blocks)) {
+      if (tubeOfSight(map, pts[i], pts[j], clearance, unknown_blocks)) {
         next = j;
         break;
       }
@@ -38,7 +54,8 @@ std::vector<Vec3> shortcutPolyline(const OccupancyMap& map, const std::vector<Ve
 }
 
 std::optional<std::vector<Vec3>> gridPath(const OccupancyMap& map, const Vec3& a, const Vec3& b,
-                                          double max_length, bool unknown_blocks, int cell_voxels) {
+                                          double max_length, bool unknown_blocks, int cell_voxels,
+                                          double clearance) {
   const int c = std::max(1, cell_voxels);
   const double res = map.resolution() * c;  // the search runs on cells of c^3 voxels
   auto cellOf = [&](const Vec3& p) {
@@ -49,7 +66,7 @@ std::optional<std::vector<Vec3>> gridPath(const OccupancyMap& map, const Vec3& a
   const double direct = (b - a).norm();
   if (direct > max_length) return std::nullopt;
   if (ka == kb) {
-    if (!lineOfSight(map, a, b, unknown_blocks)) return std::nullopt;
+    if (!tubeOfSight(map, a, b, clearance, unknown_blocks)) return std::nullopt;
     return std::vector<Vec3>{a, b};
   }
   // Every voxel on a path of length <= L lies within (L - |ab|)/2 of the segment's box. One
@@ -208,7 +225,7 @@ std::optional<std::vector<Vec3>> gridPath(const OccupancyMap& map, const Vec3& a
   for (int i = parent[goal]; i >= 0; i = parent[size_t(i)])
     pts.push_back(size_t(i) == origin ? a : cellCenter(keyOfIndex(size_t(i))));
   std::reverse(pts.begin(), pts.end());
-  std::vector<Vec3> out = shortcutPolyline(map, pts, unknown_blocks);
+  std::vector<Vec3> out = shortcutPolyline(map, pts, unknown_blocks, clearance);
   if (polylineLength(out) > max_length + 1e-9 || !polylineClear(map, out, unknown_blocks))
     return std::nullopt;
   return out;

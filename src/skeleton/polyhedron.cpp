@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 extern "C" {
 #include <libqhull_r/libqhull_r.h>
@@ -167,6 +168,71 @@ Polyhedron makePolyhedron(std::vector<Vec3> points, std::vector<VertexKind> kind
   }
   finishGeometry(p);
   return p;
+}
+
+double cubePenetration(const Polyhedron& p, const Vec3& c, double h) {
+  if (!p.valid()) return -std::numeric_limits<double>::infinity();
+  double pen = std::numeric_limits<double>::infinity();
+  for (size_t f = 0; f < p.faces.size(); ++f) {
+    const Vec3& n = p.normals[f];
+    pen = std::min(pen, h * n.cwiseAbs().sum() - (n.dot(c) + p.offsets[f]));
+    if (pen <= 0) return pen;
+  }
+  return pen;
+}
+
+Polyhedron clipPolyhedron(const Polyhedron& p, const Vec3& normal, double d) {
+  if (!p.valid()) return p;
+  std::vector<Vec3> pts;
+  std::vector<VertexKind> kinds;
+  for (int v : p.hullVertices())
+    if (normal.dot(p.points[size_t(v)]) <= d) {
+      pts.push_back(p.points[size_t(v)]);
+      kinds.push_back(p.kinds[size_t(v)]);
+    }
+  // Every hull edge appears in two triangles; take it once, from the lower index.
+  for (const auto& t : p.faces)
+    for (int i = 0; i < 3; ++i) {
+      const int a = t[size_t(i)], b = t[size_t((i + 1) % 3)];
+      if (a > b) continue;
+      const double da = normal.dot(p.points[size_t(a)]) - d, db = normal.dot(p.points[size_t(b)]) - d;
+      if ((da < 0 && db > 0) || (da > 0 && db < 0)) {
+        pts.push_back(p.points[size_t(a)] + (da / (da - db)) * (p.points[size_t(b)] - p.points[size_t(a)]));
+        kinds.push_back(VertexKind::Obstacle);
+      }
+    }
+  return buildPolyhedron(std::move(pts), std::move(kinds));
+}
+
+std::optional<Polyhedron> cutOutCube(const Polyhedron& p, const Vec3& c, double h, const Vec3& keep) {
+  // Candidate planes n . x <= d, each touching the cube on the side of `keep`.
+  std::vector<std::pair<Vec3, double>> planes;
+  const Vec3 dir = c - keep;
+  if (dir.norm() > 1e-9) {
+    const Vec3 n = dir.normalized();
+    planes.emplace_back(n, n.dot(c) - h * n.cwiseAbs().sum());
+  }
+  for (int a = 0; a < 3; ++a) {
+    if (std::abs(dir[a]) < 1e-12) continue;
+    Vec3 n = Vec3::Zero();
+    n[a] = dir[a] > 0 ? 1.0 : -1.0;
+    planes.emplace_back(n, n.dot(c) - h);
+  }
+  const std::vector<int> verts = p.hullVertices();
+  double best_depth = std::numeric_limits<double>::infinity();
+  int best = -1;
+  for (size_t i = 0; i < planes.size(); ++i) {
+    const auto& [n, d] = planes[i];
+    if (n.dot(keep) >= d - 1e-9) continue;  // would cut `keep` away
+    double depth = 0.0;
+    for (int v : verts) depth = std::max(depth, n.dot(p.points[size_t(v)]) - d);
+    if (depth < best_depth) {
+      best_depth = depth;
+      best = int(i);
+    }
+  }
+  if (best < 0) return std::nullopt;
+  return clipPolyhedron(p, planes[size_t(best)].first, planes[size_t(best)].second);
 }
 
 bool polyhedraIntersect(const Polyhedron& a, const Polyhedron& b, double tolerance) {

@@ -156,3 +156,84 @@ TEST(GridPath, CoarseCellsSkipSlitsTooNarrowToFly) {
   EXPECT_TRUE(polylineClear(grid, *coarse, true));
   EXPECT_LE(polylineLength(*coarse), 2.0);
 }
+
+TEST(GridPath, TubeOfSightKeepsClearOfCorners) {
+  BoxRoomScene scene = boxRoomGrid();
+  // One occupied voxel [2.0, 2.1]^2 x [1.0, 1.1]; a segment passing 0.03 m beside its corner.
+  scene.grid.wall(Aabb::of(Vec3(2.01, 2.01, 1.01), Vec3(2.09, 2.09, 1.09)));
+  const Vec3 a(1.0, 2.13, 1.05), b(3.0, 2.13, 1.05);
+  EXPECT_TRUE(lineOfSight(scene.grid, a, b, true));
+  EXPECT_TRUE(tubeOfSight(scene.grid, a, b, 0.0, true));
+  EXPECT_FALSE(tubeOfSight(scene.grid, a, b, 0.05, true));
+  const Vec3 c(1.0, 2.3, 1.05), d(3.0, 2.3, 1.05);
+  EXPECT_TRUE(tubeOfSight(scene.grid, c, d, 0.05, true));
+  // Shortcuts keep the tube too: the corner point of this polyline cannot be skipped.
+  const std::vector<Vec3> pts{a, Vec3(2.05, 2.4, 1.05), b};
+  EXPECT_EQ(shortcutPolyline(scene.grid, pts, true, 0.0).size(), 2u);
+  EXPECT_EQ(shortcutPolyline(scene.grid, pts, true, 0.05).size(), 3u);
+}
+
+TEST(GraphSearch, OutsideTheWindowPathsFollowTheGraphNotStraightLines) {
+  // Grown with the whole map known, searched after the window moved away: nothing in the map
+  // says where the wall is, so only the graph (and its polyhedra) keeps paths out of it.
+  TwoRoomsScene scene = twoRoomsGrid();
+  ConnectivityGraph g;
+  grow(g, scene.grid, Vec3(1.0, 1.0, 1.2));
+  scene.grid.setWindow(Aabb::of(Vec3(20, 20, 0), Vec3(21, 21, 1)));
+  const TwoRoomsScene truth = twoRoomsGrid();
+  int found = 0;
+  for (double y : {0.5, 1.0, 3.0, 3.5})
+    for (const Vec3& start : {Vec3(3.6, y, 1.2), Vec3(3.75, y, 0.9)}) {
+      const Vec3 goal(4.6, y, 1.2);  // just across the wall
+      const GraphPath p = findGraphPath(g, scene.grid, start, goal);
+      if (!p.found) continue;
+      ++found;
+      for (size_t i = 1; i < p.points.size(); ++i)
+        for (int k = 0; k <= 200; ++k) {
+          const Vec3 q = p.points[i - 1] + (p.points[i] - p.points[i - 1]) * (k / 200.0);
+          ASSERT_NE(truth.grid.stateAt(q), VoxelState::Occupied) << "start " << start.transpose() << " at " << q.transpose();
+        }
+      EXPECT_GT(p.length, 2.0);  // around through the door at y 1.6-2.5
+    }
+  EXPECT_GE(found, 4);
+}
+
+TEST(GraphSearch, ObstaclesSeenLaterAreRecordedAndAvoided) {
+  // The room is grown empty; then a pillar is observed in its middle. The graph keeps its nodes
+  // but records the pillar in the polyhedra it lies in and blocks the edges through it, so a
+  // search made after the window has moved on (the map knows nothing) still goes around it.
+  BoxRoomScene scene = boxRoomGrid(Vec3(6.0, 4.0, 2.6));
+  ConnectivityGraph g;
+  grow(g, scene.grid, Vec3(1.0, 2.0, 1.2));
+  const Aabb pillar = Aabb::of(Vec3(2.6, 1.0, 0.0), Vec3(3.4, 3.0, 2.6));
+  scene.grid.wall(pillar);
+  std::vector<Vec3i> seen;
+  const double res = scene.grid.resolution();
+  for (double x = pillar.min.x() + 0.05; x < pillar.max.x(); x += res)
+    for (double y = pillar.min.y() + 0.05; y < pillar.max.y(); y += res)
+      for (double z = 0.05; z < 2.6; z += res) seen.push_back(scene.grid.keyOf(Vec3(x, y, z)));
+  const GraphUpdateStats st = g.update(scene.grid, Vec3(1.0, 2.0, 1.2), 10.0, seen);
+  EXPECT_GT(st.recarved, 0);
+  EXPECT_GT(st.blocked_edges, 0);
+  for (const ScgEdge& e : g.edges()) {
+    if (e.blocked) continue;
+    std::vector<Vec3> poly{g.node(e.a).center};
+    poly.insert(poly.end(), e.via.begin(), e.via.end());
+    poly.push_back(g.node(e.b).center);
+    EXPECT_TRUE(polylineClear(scene.grid, poly, false)) << "unblocked edge " << e.a << "-" << e.b << " crosses the pillar";
+  }
+  const BoxRoomScene truth = [&] {
+    BoxRoomScene t = boxRoomGrid(Vec3(6.0, 4.0, 2.6));
+    t.grid.wall(pillar);
+    return t;
+  }();
+  scene.grid.setWindow(Aabb::of(Vec3(20, 20, 0), Vec3(21, 21, 1)));
+  const GraphPath p = findGraphPath(g, scene.grid, Vec3(2.0, 2.0, 1.2), Vec3(4.0, 2.0, 1.2));
+  ASSERT_TRUE(p.found);
+  for (size_t i = 1; i < p.points.size(); ++i)
+    for (int k = 0; k <= 200; ++k) {
+      const Vec3 q = p.points[i - 1] + (p.points[i] - p.points[i - 1]) * (k / 200.0);
+      ASSERT_FALSE(pillar.contains(q)) << "path through the pillar at " << q.transpose();
+    }
+  EXPECT_TRUE(truth.grid.stateAt(p.points.front()) == VoxelState::Free);
+}

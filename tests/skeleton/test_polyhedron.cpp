@@ -134,3 +134,44 @@ TEST(FibonacciSphere, UnitAndSpread) {
   }
   EXPECT_TRUE(fibonacciSphere(0).empty());
 }
+
+TEST(Polyhedron, ClipKeepsTheHalfBelowThePlane) {
+  const Polyhedron cube = buildPolyhedron(cubePoints(Vec3(0, 0, 0), 2.0), {});
+  // A diagonal plane x + y <= 2 (through the middle): half the volume, a triangular prism.
+  const Vec3 n = Vec3(1, 1, 0).normalized();
+  const Polyhedron half = clipPolyhedron(cube, n, n.dot(Vec3(1, 1, 0)));
+  ASSERT_TRUE(half.valid());
+  EXPECT_NEAR(half.volume, 4.0, 1e-9);
+  for (int v : half.hullVertices()) EXPECT_LE(n.dot(half.points[size_t(v)]), n.dot(Vec3(1, 1, 0)) + 1e-9);
+  EXPECT_TRUE(half.contains(Vec3(0.5, 0.5, 1)));
+  EXPECT_FALSE(half.contains(Vec3(1.5, 1.5, 1)));
+  // The new vertices lie against what was cut away.
+  int cut = 0;
+  for (int v : half.hullVertices()) cut += half.kinds[size_t(v)] == VertexKind::Obstacle;
+  EXPECT_EQ(cut, 0);  // the plane runs through cube vertices: no edge is crossed strictly
+  const Polyhedron slab = clipPolyhedron(cube, Vec3::UnitX(), 0.5);
+  EXPECT_NEAR(slab.volume, 4 * 0.5, 1e-9);
+  cut = 0;
+  for (int v : slab.hullVertices()) cut += slab.kinds[size_t(v)] == VertexKind::Obstacle;
+  EXPECT_EQ(cut, 4);
+  // Nothing left: invalid.
+  EXPECT_FALSE(clipPolyhedron(cube, Vec3::UnitX(), -0.1).valid());
+}
+
+TEST(Polyhedron, CubePenetrationAndShallowestCut) {
+  const Polyhedron box = buildPolyhedron(cubePoints(Vec3(0, 0, 0), 2.0), {});
+  const double h = 0.05;
+  EXPECT_NEAR(cubePenetration(box, Vec3(1, 1, 1), h), 1.0 + h, 1e-9);
+  EXPECT_NEAR(cubePenetration(box, Vec3(0.02, 1, 1), h), 0.07, 1e-9);
+  EXPECT_LT(cubePenetration(box, Vec3(-0.2, 1, 1), h), 0.0);
+  // A voxel near the +x face, off to the side of the keep point: the x face of the voxel is the
+  // shallowest cut (a thin slab), not the plane facing `keep` (a slice through the middle).
+  const Vec3 keep(0.5, 0.5, 1.0), voxel(1.9, 1.5, 1.0);
+  const std::optional<Polyhedron> cut = cutOutCube(box, voxel, h, keep);
+  ASSERT_TRUE(cut && cut->valid());
+  EXPECT_NEAR(cut->volume, 2 * 2 * (1.9 - h), 1e-9);
+  EXPECT_LE(cubePenetration(*cut, voxel, h), 1e-9);
+  EXPECT_TRUE(cut->contains(keep));
+  // No plane can keep a point inside the voxel itself.
+  EXPECT_FALSE(cutOutCube(box, voxel, h, voxel).has_value());
+}

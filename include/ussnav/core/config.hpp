@@ -143,6 +143,14 @@ struct SkeletonConfig {
   int max_expansions_per_frame = 200;
   int seed_retries = 4;             // fallback seeds from a surface's free vertices
   double max_unknown_gap = 0.2;     // unknown stretches up to this long are sensor holes, m
+  bool carve_obstacles = false;     // cut occupied voxels out of a hull (else: record them)
+  int max_carve_cuts = 24;          // at most this many cuts per polyhedron
+  double edge_clearance = 0.05;     // edges and path shortcuts keep a tube this wide clear, m
+  bool gap_fill = true;             // seed polyhedra in observed free space nothing covers
+  double gap_spacing = 0.5;         // lattice of gap-seed candidates, m
+  double gap_scan_radius = 4.0;     // candidates within this of the UAV, m
+  double gap_min_center_distance = 0.6;  // gap seeds: no existing centre within this, m
+  double gap_clearance = 0.5;       // gap seeds: no obstacle within this, m (>= robot_radius)
   template <class V> void visit(V& v) {
     v.field("sphere_samples", sphere_samples, 8, 2000, "points");
     v.field("max_radius", max_radius, 0.2, 10.0, "m");
@@ -158,6 +166,14 @@ struct SkeletonConfig {
     v.field("max_expansions_per_frame", max_expansions_per_frame, 1, 100000, "");
     v.field("seed_retries", seed_retries, 0, 100, "");
     v.field("max_unknown_gap", max_unknown_gap, 0.0, 2.0, "m");
+    v.field("carve_obstacles", carve_obstacles);
+    v.field("max_carve_cuts", max_carve_cuts, 0, 1000, "");
+    v.field("edge_clearance", edge_clearance, 0.0, 1.0, "m");
+    v.field("gap_fill", gap_fill);
+    v.field("gap_spacing", gap_spacing, 0.1, 5.0, "m");
+    v.field("gap_scan_radius", gap_scan_radius, 0.0, 50.0, "m");
+    v.field("gap_min_center_distance", gap_min_center_distance, 0.0, 10.0, "m");
+    v.field("gap_clearance", gap_clearance, 0.0, 5.0, "m");
   }
 };
 

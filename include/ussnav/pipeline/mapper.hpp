@@ -70,6 +70,7 @@ class Mapper {
   RollingGrid grid_;
   CoverageMask coverage_;
   ConnectivityGraph graph_;
+  std::vector<Vec3i> new_occupied_;  // scratch: voxels the last insertion made Occupied
   RegionPartitioner regions_;
   size_t partitioned_nodes_ = 0, partitioned_edges_ = 0;  // graph size at the last region update
   std::unique_ptr<Detector> detector_;

@@ -27,6 +27,7 @@ struct SgEdge {
   int a = -1, b = -1;
   std::string type;               // kinematic | overlap | visible | loop
   double weight = 1.0;
+  bool blocked = false;           // an obstacle was seen on it later: not for paths
   bool operator==(const SgEdge&) const = default;
 };
 

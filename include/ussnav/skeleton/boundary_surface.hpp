@@ -27,11 +27,13 @@ struct BoundarySurface {
   Vec3 center = Vec3::Zero();  // mean of the cluster's distinct vertices (its geometric centre)
   Vec3 normal = Vec3::UnitX(); // area-weighted mean outward normal, unit
   Vec3 nexus = Vec3::Zero();   // center projected onto the representative plane
+  std::vector<Vec3> free_vertices;  // the faces' Free vertices, nearest the nexus first (copies:
+                                    // the owner's hull may be carved later)
 };
 
 // Fills area, center, normal and nexus of a surface made of `faces` of `p`. The representative
 // plane has the area-weighted mean normal and passes through the area-weighted mean of the face
-// centroids; the Nexus Point is the vertex mean projected onto it.
+// centroids; the Nexus Point is the vertex mean projected onto it. Copies the Free vertices.
 BoundarySurface makeBoundarySurface(const Polyhedron& p, std::vector<int> faces);
 
 // Clusters the opening faces of `p` into Boundary Surfaces: region growing over faces that share

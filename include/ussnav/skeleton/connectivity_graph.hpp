@@ -4,6 +4,10 @@
 // local map: a seed at the UAV when nothing covers it, then Boundary Surfaces popped
 // (FindNewExpandSeed -> ExpandNewPolyhedron -> UpdateTopology) up to max_expansions_per_frame;
 // surfaces blocked by unknown space are parked and retried once their probe voxel is observed.
+// When the queue is empty and budget is left, gap filling (skeleton.gap_fill) seeds a polyhedron
+// at the nearest point of a gap_spacing lattice around the UAV that is observed free, outside
+// every polyhedron, robot_radius clear and in sight of a node (linked to it by a Visible edge):
+// space the Boundary Surfaces never pointed at (behind furniture, beside a narrow door).
 // Nodes and edges are never removed or moved and outlive the map window. Deterministic.
 // Cost: ~0.2-0.5 ms per expansion; a frame with nothing new costs microseconds.
 //
@@ -36,6 +40,8 @@ struct ScgEdge {
   double weight = 1.0;
   double length = 0.0;           // along the polyline
   std::vector<Vec3> via;         // waypoints between node a's and node b's centres (often none)
+  bool blocked = false;          // an obstacle was observed on it after it was made: path
+                                 // search does not use it (it still joins the two for regions)
 };
 
 struct ScgNode {
@@ -46,10 +52,17 @@ struct ScgNode {
   Polyhedron polyhedron;
   double reach = 0.0;            // max distance from center to a hull vertex
   int parent = -1;               // node this one was expanded from (-1: root or UAV seed w/o link)
+  bool gap_seed = false;         // seeded by gap filling (parent: the node that saw the seed)
   double created_time = 0.0;
   int64_t created_frame = 0;
   std::vector<int> edges;        // indices into ConnectivityGraph::edges()
+  // Occupied voxel centres inside the hull (the hull cut an obstacle's corner), seen when it
+  // was made or later; a straight segment inside the hull must avoid them. obstacles_overflow:
+  // more than kMaxNodeObstacles, so the hull cannot be trusted as free space at all.
+  std::vector<Vec3> obstacles;
+  bool obstacles_overflow = false;
 };
+constexpr size_t kMaxNodeObstacles = 512;
 
 // What one update() did.
 struct GraphUpdateStats {
@@ -62,6 +75,9 @@ struct GraphUpdateStats {
   int dropped = 0;           // surfaces whose seed was too close / inside / unsafe
   int rejected_polyhedra = 0;// expansions dropped: degenerate hull, centre too close, no link
   bool seeded_at_uav = false;
+  int gap_seeds = 0;         // expansions at gap seeds (observed free space nothing covered)
+  int recarved = 0;          // polyhedra that took in a newly observed obstacle (recorded or cut)
+  int blocked_edges = 0;     // edges found crossing newly observed obstacles
   double ms = 0.0;
 };
 
@@ -70,7 +86,12 @@ class ConnectivityGraph {
   explicit ConnectivityGraph(const SkeletonConfig& cfg = {});
 
   // One frame: grows the graph where the known free space of `map` allows (see file comment).
-  GraphUpdateStats update(const OccupancyMap& map, const Vec3& uav_position, double time);
+  // `new_occupied`: voxels that became Occupied since the last update (RollingGrid::changes());
+  // each is recorded in the polyhedra it reaches into (ScgNode::obstacles; cut out of them with
+  // skeleton.carve_obstacles), and edges that now cross an obstacle are marked blocked.
+  // Centres, ids and edges stay.
+  GraphUpdateStats update(const OccupancyMap& map, const Vec3& uav_position, double time,
+                          const std::vector<Vec3i>& new_occupied = {});
 
   const SkeletonConfig& config() const { return cfg_; }
   const std::vector<ScgNode>& nodes() const { return nodes_; }
@@ -106,7 +127,13 @@ class ConnectivityGraph {
   // Expands at `seed`, links to `parent` through `hints` (extra waypoints allowed for the
   // kinematic edge), runs UpdateTopology and queues the new Boundary Surfaces. -1 if rejected.
   int addNode(const OccupancyMap& map, const Vec3& seed, int parent, const std::vector<Vec3>& hints,
-              bool require_parent_link, double time, GraphUpdateStats& stats);
+              bool require_parent_link, double time, GraphUpdateStats& stats, bool gap_seed = false);
+  // Newly observed obstacle voxels: recorded in (or, with carve_obstacles, cut out of) the
+  // polyhedra they reach into; edges across them blocked (see update()).
+  void noteNewObstacles(const OccupancyMap& map, const std::vector<Vec3i>& new_occupied,
+                         GraphUpdateStats& stats);
+  // One gap seed expanded (true), or no lattice point needs one now (false).
+  bool fillOneGap(const OccupancyMap& map, const Vec3& uav_position, double time, GraphUpdateStats& stats);
   void updateTopology(const OccupancyMap& map, int id, GraphUpdateStats& stats);
   int addEdge(int a, int b, EdgeType type, double weight, std::vector<Vec3> via);
   // Shortest graph distance from `from` to every node within `limit` (others: infinity).
@@ -124,7 +151,11 @@ class ConnectivityGraph {
   std::unordered_map<int64_t, std::vector<int>> cells_;  // spatial hash of node centres
   double cell_size_ = 2.0;
   double max_reach_ = 0.0;
+  double max_edge_length_ = 0.0;
   int64_t frame_ = 0;
+  // Gap-fill lattice points settled for good: covered by a polyhedron, expanded, too close to a
+  // centre or next to an obstacle. Others are re-checked at each scan.
+  std::unordered_map<int64_t, uint8_t> gap_settled_;
   int mount_ = -1;                 // last node that contained the UAV
   Vec3 mount_point_ = Vec3::Zero();// UAV position when it was last inside mount_
 };

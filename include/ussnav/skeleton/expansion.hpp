@@ -29,6 +29,20 @@ class ConnectivityGraph;
 Polyhedron expandNewPolyhedron(const OccupancyMap& map, const Vec3& seed,
                                const std::vector<Vec3>& directions, const SkeletonConfig& cfg);
 
+// A hull of ray end points can cut the corner of an obstacle that lies between two rays (a door
+// jamb, a table edge, a wall beside a door). A voxel counts as inside when its cube reaches more
+// than kTouchFraction voxels into the hull (ray end points touch the voxels that stopped them).
+constexpr double kTouchFraction = 0.1;
+// Centres of the Occupied voxels of `map` inside `poly`, in key order. One state lookup per voxel
+// of the hull's box.
+std::vector<Vec3> obstacleVoxelsInside(const OccupancyMap& map, const Polyhedron& poly);
+// With cfg.carve_obstacles, expandNewPolyhedron cuts them out of the hull: nearest to the seed
+// first, each by the shallowest plane that keeps the seed (cutOutCube), so the hull stays convex.
+// At most `max_cuts` cuts; a hull that needs more, or whose seed touches an obstacle, is returned
+// invalid. Off by default: a convex hull cannot wrap a door jamb, and one plane per jamb costs
+// ~5 points of free-space coverage (0.90 -> 0.85 on 9 worlds); nodes record the voxels instead.
+Polyhedron carveObstacles(const OccupancyMap& map, Polyhedron poly, const Vec3& seed, int max_cuts);
+
 enum class SeedStatus : uint8_t {
   Accepted,        // expand here
   TooClose,        // an existing node centre lies within min_center_distance: drop

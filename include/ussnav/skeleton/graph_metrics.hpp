@@ -20,10 +20,14 @@ struct GraphStats {
   int deferred_surfaces = 0;
   double mean_degree = 0.0;
   int components = 0;  // connected components (0 for an empty graph)
+  int blocked_edges = 0;       // edges an obstacle observed later lies on
+  int nodes_with_obstacles = 0;// hulls known to hold an occupied voxel (a corner they cut)
+  int gap_nodes = 0;           // nodes seeded by gap filling
 };
 GraphStats graphStats(const ConnectivityGraph& g);
 // {"nodes", "edges", "edges_by_type": {"kinematic", "overlap", "visible", "loop"},
-//  "queued_surfaces", "deferred_surfaces", "mean_degree", "components"}
+//  "queued_surfaces", "deferred_surfaces", "mean_degree", "components", "blocked_edges",
+//  "nodes_with_obstacles", "gap_nodes"}
 nlohmann::json toJson(const GraphStats& s);
 
 // Connected component id of every node (ids ascending from 0 in order of the lowest node id).

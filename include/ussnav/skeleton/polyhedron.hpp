@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "ussnav/core/types.hpp"
@@ -59,6 +60,24 @@ Polyhedron buildPolyhedron(std::vector<Vec3> points, std::vector<VertexKind> kin
 // radius are computed. For tests and for callers that already have a hull.
 Polyhedron makePolyhedron(std::vector<Vec3> points, std::vector<VertexKind> kinds,
                           std::vector<std::array<int, 3>> faces);
+
+// The part of `p` with normal . x <= d (normal unit): hull vertices on that side plus the points
+// where hull edges cross the plane (kind Obstacle: the cut lies against an obstacle), re-hulled.
+// Invalid when nothing of volume is left. One Qhull run.
+Polyhedron clipPolyhedron(const Polyhedron& p, const Vec3& normal, double d);
+
+// How far the axis-aligned cube at c (half size h) reaches into p past every face plane: the
+// smallest over faces of h |n|_1 - (n . c + offset). Positive when the cube crosses every face
+// plane inward. Face-normal axes only, so a cube beside an edge of the hull may count as inside
+// when it is not (callers then cut a little too much, never too little). O(faces).
+double cubePenetration(const Polyhedron& p, const Vec3& c, double h);
+
+// Cuts the voxel cube at c (half size h) out of p while keeping `keep` (the seed or centre): of
+// the cube faces that face `keep` and the plane facing `keep` that touches the cube, the one
+// whose cut is shallowest (least hull depth beyond it) — against a wall that is the wall's own
+// plane, at a door jamb a slice off the corner. nullopt when no such plane keeps `keep`
+// strictly inside; an invalid polyhedron when nothing of volume is left.
+std::optional<Polyhedron> cutOutCube(const Polyhedron& p, const Vec3& c, double h, const Vec3& keep);
 
 // Whether two convex polyhedra intersect (touching counts), by separating planes taken from the
 // face normals of both. The edge-edge axes are not tested, so in rare configurations two
