@@ -81,6 +81,15 @@ TEST(SceneGraphIo, RoundTripIsExact) {
   SceneGraph changed = g;
   changed.objects[0].n_observations = 5;
   EXPECT_FALSE(changed == g);
+  // A blocked edge survives the round trip; documents without the (optional) key load unblocked.
+  SceneGraph blocked = g;
+  blocked.edges[0].blocked = true;
+  saveSceneGraph(p, blocked);
+  EXPECT_EQ(loadSceneGraph(p), blocked);
+  nlohmann::json old = toJson(blocked);
+  for (auto& e : old["edges"]) e.erase("blocked");
+  { std::ofstream(p) << old.dump(); }
+  EXPECT_EQ(loadSceneGraph(p), g);
 }
 
 TEST(SceneGraphIo, CorruptDocumentsNameFileAndField) {
@@ -110,6 +119,10 @@ TEST(SceneGraphIo, CorruptDocumentsNameFileAndField) {
   j = toJson(handMade());
   j["objects"][1]["node_id"] = 42;
   expectRejected(j.dump(), "objects[1].node_id", "object_unknown_node.json");
+
+  j = toJson(handMade());
+  j["edges"][0]["blocked"] = "maybe";
+  expectRejected(j.dump(), "edges[0].blocked", "edge_blocked.json");
 
   j = toJson(handMade());
   j["edges"][0]["type"] = "teleport";
