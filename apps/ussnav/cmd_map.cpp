@@ -139,6 +139,7 @@ void runMap(const MapArgs& a) {
     stats["objects"] = {{"count", oq.count},
                         {"all", objs->objects().size()},
                         {"confirmed", objs->confirmedCount()},
+                        {"absorbed", objs->absorbedCount()},
                         {"seen_instances", oq.seen_instances},
                         {"matched_objects", oq.matched_objects},
                         {"matched_instances", oq.matched_instances},

@@ -301,6 +301,10 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
           break;
         }
         if (!ok) {
+          if (std::getenv("USSNAV_DEBUG_EPISODE"))
+            std::fprintf(stderr, "[t=%.1f] object %d (%s) at (%.2f %.2f %.2f): %zu approach poses, none reachable\n", t,
+                         best->id, best->label.c_str(), best->centroid.x(), best->centroid.y(), best->centroid.z(),
+                         approachPoses(grid, gd, best->box, flight_z, cfg).size());
           failed_objects[best->id] = t + ep.blacklist_s;
           ++R.unreachable;
         }

@@ -22,6 +22,7 @@ IntegrateStats& IntegrateStats::operator+=(const IntegrateStats& o) {
   merged_semantic += o.merged_semantic;
   merged_geometric += o.merged_geometric;
   rejected += o.rejected;
+  absorbed += o.absorbed;
   return *this;
 }
 
@@ -71,9 +72,18 @@ ObjectLayer::ObjectLayer(ObjectLayer&&) noexcept = default;
 ObjectLayer& ObjectLayer::operator=(ObjectLayer&&) noexcept = default;
 
 const MappedObject* ObjectLayer::find(int id) const {
-  // Ids are handed out in order and never removed, so the id is the position plus one.
-  if (id < 1 || size_t(id) > objects_.size()) return nullptr;
-  return &objects_[size_t(id - 1)];
+  for (auto r = redirect_.find(id); r != redirect_.end(); r = redirect_.find(id)) id = r->second;
+  const auto it = position_.find(id);
+  return it == position_.end() ? nullptr : &objects_[it->second];
+}
+
+double ObjectLayer::boxOverlap(const Aabb& a, const Aabb& b, double grow) {
+  if (a.empty() || b.empty()) return 0.0;
+  const Vec3 ea = (a.size().array() + 2 * grow).max(0.0), eb = (b.size().array() + 2 * grow).max(0.0);
+  const Vec3 lo = a.min.cwiseMax(b.min).array() - grow, hi = a.max.cwiseMin(b.max).array() + grow;
+  const Vec3 e = (hi - lo).cwiseMax(Vec3::Zero());
+  const double smaller = std::min(ea.prod(), eb.prod());
+  return smaller > 0 ? e.prod() / smaller : 0.0;
 }
 
 size_t ObjectLayer::confirmedCount() const {
@@ -154,15 +164,18 @@ Association ObjectLayer::integrateCloud(const std::vector<Vec3f>& world_points, 
     if (best >= 0) a.kind = MatchKind::kGeometric;
   }
 
+  size_t changed;
   if (best >= 0) {
     a.cosine = cosines[best];
     a.overlap_new_old = forward[best];
-    a.object_id = objects_[cands[best]].id;
-    merge(size_t(cands[best]), cloud, label, score, v, time);
+    changed = size_t(cands[best]);
+    merge(changed, cloud, label, score, v, time);
   } else {
     create(cloud, label, score, v, anchor_node, anchor_region, time);
-    a.object_id = objects_.back().id;
+    changed = objects_.size() - 1;
   }
+  changed = absorbDuplicates(changed, a.absorbed);
+  a.object_id = objects_[changed].id;
   return a;
 }
 
@@ -174,6 +187,7 @@ void ObjectLayer::create(const std::vector<Vec3f>& cloud, const std::string& lab
   o.region_id = region;
   o.first_seen = time;
   o.voxel_size = cfg_.voxel_size;
+  position_[o.id] = objects_.size();
   objects_.push_back(std::move(o));
   state_.push_back(State{VoxelCloud(cfg_.voxel_size, cfg_.tau), Embedding::Zero(v.size())});
   merge(objects_.size() - 1, cloud, label, score, v, time);
@@ -184,6 +198,21 @@ void ObjectLayer::merge(size_t index, const std::vector<Vec3f>& cloud, const std
   MappedObject& o = objects_[index];
   State& s = state_[index];
   s.cloud.insert(cloud);
+  // A zero score would erase the observation from the label vote and embedding; count it a little.
+  const double w = std::max(score, 1e-3);
+  auto vote = std::find_if(o.votes.begin(), o.votes.end(), [&](const auto& lv) { return lv.first == label; });
+  if (vote == o.votes.end()) o.votes.emplace_back(label, w);
+  else vote->second += w;
+  s.embedding_sum += float(w) * v;
+  if (s.embedding_sum.norm() == 0) o.embedding = v;
+  ++o.n_observations;
+  o.last_seen = time;
+  refresh(index);
+}
+
+void ObjectLayer::refresh(size_t index) {
+  MappedObject& o = objects_[index];
+  State& s = state_[index];
   // Bounded memory per object: coarsen the voxel grid until the cloud fits.
   while (int(s.cloud.size()) > cfg_.max_points_per_object) s.cloud.coarsen();
   o.voxel_size = s.cloud.voxelSize();
@@ -195,22 +224,58 @@ void ObjectLayer::merge(size_t index, const std::vector<Vec3f>& cloud, const std
     c += p.cast<double>();
   }
   o.centroid = c / double(std::max<size_t>(1, o.cloud.size()));
-
-  // A zero score would erase the observation from the label vote and embedding; count it a little.
-  const double w = std::max(score, 1e-3);
-  auto vote = std::find_if(o.votes.begin(), o.votes.end(), [&](const auto& lv) { return lv.first == label; });
-  if (vote == o.votes.end()) o.votes.emplace_back(label, w);
-  else vote->second += w;
   const auto top = std::max_element(o.votes.begin(), o.votes.end(),
                                     [](const auto& x, const auto& y) { return x.second < y.second; });
   o.label = top->first;  // first maximum: ties keep the earliest label
-  s.embedding_sum += float(w) * v;
   const float n = s.embedding_sum.norm();
-  o.embedding = n > 0 ? Embedding(s.embedding_sum / n) : v;
-
-  ++o.n_observations;
+  if (n > 0) o.embedding = s.embedding_sum / n;
   o.confirmed = o.n_observations >= cfg_.min_observations_to_confirm;
-  o.last_seen = time;
+  index_->dirty = true;
+}
+
+size_t ObjectLayer::absorbDuplicates(size_t index, int& absorbed) {
+  if (cfg_.merge_box_overlap <= 0) return index;
+  for (;;) {
+    const MappedObject& o = objects_[index];
+    int best = -1;
+    double best_overlap = cfg_.merge_box_overlap;
+    for (int k : candidatesNear(o.centroid)) {
+      if (size_t(k) == index) continue;
+      const MappedObject& other = objects_[size_t(k)];
+      if (cosineSimilarity(o.embedding, other.embedding) <= cfg_.semantic_cos) continue;
+      const double overlap = boxOverlap(o.box, other.box, cfg_.voxel_size);
+      if (overlap > best_overlap) best_overlap = overlap, best = k;
+    }
+    if (best < 0) return index;
+    // The older object (smaller id, created first) survives; indices shift past the erased one.
+    const size_t other = size_t(best);
+    const bool keep_this = objects_[index].id < objects_[other].id;
+    const size_t into = keep_this ? index : other, from = keep_this ? other : index;
+    absorb(into, from);
+    ++absorbed;
+    index = into > from ? into - 1 : into;
+  }
+}
+
+void ObjectLayer::absorb(size_t into, size_t from) {
+  MappedObject& o = objects_[into];
+  const MappedObject& f = objects_[from];
+  state_[into].cloud.insert(f.cloud);
+  for (const auto& [label, w] : f.votes) {
+    auto vote = std::find_if(o.votes.begin(), o.votes.end(), [&](const auto& lv) { return lv.first == label; });
+    if (vote == o.votes.end()) o.votes.emplace_back(label, w);
+    else vote->second += w;
+  }
+  state_[into].embedding_sum += state_[from].embedding_sum;
+  o.n_observations += f.n_observations;
+  o.first_seen = std::min(o.first_seen, f.first_seen);
+  o.last_seen = std::max(o.last_seen, f.last_seen);
+  refresh(into);
+  redirect_[f.id] = o.id;
+  position_.erase(f.id);
+  objects_.erase(objects_.begin() + std::ptrdiff_t(from));
+  state_.erase(state_.begin() + std::ptrdiff_t(from));
+  for (size_t i = from; i < objects_.size(); ++i) position_[objects_[i].id] = i;
   index_->dirty = true;
 }
 
@@ -223,6 +288,7 @@ IntegrateStats ObjectLayer::integrate(const std::vector<Detection>& detections, 
     else if (a.kind == MatchKind::kSemantic) ++st.merged_semantic;
     else if (a.kind == MatchKind::kGeometric) ++st.merged_geometric;
     else ++st.created;
+    st.absorbed += a.absorbed;
   }
   return st;
 }

@@ -90,6 +90,7 @@ TEST(ObjectLayer, TwoChairsSideBySideStayTwo) {
     EXPECT_EQ(a.candidates, round == 0 ? 1 : 2);  // the other chair is a candidate, never a match
   }
   ASSERT_EQ(layer.size(), 2u);
+  EXPECT_EQ(layer.absorbedCount(), 0);
   EXPECT_EQ(layer.objects()[0].n_observations, 3);
   EXPECT_EQ(layer.objects()[1].n_observations, 3);
   EXPECT_NEAR(layer.objects()[0].centroid.x(), 1.0, 0.02);
@@ -142,6 +143,83 @@ TEST(ObjectLayer, CandidatesAreObjectsWithinTheAssociationRadius) {
   EXPECT_EQ(end.candidates, 1);
   EXPECT_EQ(end.kind, MatchKind::kSemantic);
   EXPECT_EQ(layer.size(), 3u);
+}
+
+// The faces of box [lo, hi] a camera sees from the (-x, -y) corner (front y = lo, left x = lo)
+// or, with `far`, from the opposite corner (back and right).
+std::vector<Vec3f> cornerView(const Vec3& lo, const Vec3& hi, bool far, uint64_t seed) {
+  std::vector<Vec3f> out;
+  for (const auto& p : boxSurface(lo, hi, 0.02, 0.005, seed)) {
+    const bool near_faces = p.y() <= lo.y() + 0.01 || p.x() <= lo.x() + 0.01;
+    const bool far_faces = p.y() >= hi.y() - 0.01 || p.x() >= hi.x() - 0.01;
+    if (far ? far_faces && !near_faces : near_faces && !far_faces) out.push_back(p);
+  }
+  return out;
+}
+
+TEST(ObjectLayer, BoxOverlapIsIntersectionOverTheSmallerGrownBox) {
+  const Aabb a = Aabb::of(Vec3(0, 0, 0), Vec3(1, 1, 1)), b = Aabb::of(Vec3(0.5, 0, 0), Vec3(1.5, 1, 1));
+  EXPECT_NEAR(ObjectLayer::boxOverlap(a, b, 0.0), 0.5, 1e-12);
+  EXPECT_NEAR(ObjectLayer::boxOverlap(a, b, 0.05), 0.6 * 1.1 * 1.1 / (1.1 * 1.1 * 1.1), 1e-12);
+  const Aabb small = Aabb::of(Vec3(0.2, 0.2, 0.2), Vec3(0.4, 0.4, 0.4));  // inside a: all of the smaller box
+  EXPECT_NEAR(ObjectLayer::boxOverlap(a, small, 0.0), 1.0, 1e-12);
+  // A flat box (a picture) still has volume once grown.
+  const Aabb flat = Aabb::of(Vec3(0, 0, 0), Vec3(1, 0, 1)), flat2 = Aabb::of(Vec3(0.5, 0, 0), Vec3(1.5, 0, 1));
+  EXPECT_EQ(ObjectLayer::boxOverlap(flat, flat2, 0.0), 0.0);
+  EXPECT_NEAR(ObjectLayer::boxOverlap(flat, flat2, 0.05), 0.6 * 0.1 * 1.1 / (1.1 * 0.1 * 1.1), 1e-12);
+  EXPECT_EQ(ObjectLayer::boxOverlap(a, Aabb::of(Vec3(2, 0, 0), Vec3(3, 1, 1)), 0.05), 0.0);
+  EXPECT_EQ(ObjectLayer::boxOverlap(a, Aabb(), 0.05), 0.0);
+}
+
+TEST(ObjectLayer, ObjectSeenFromOppositeCornersIsMergedAsADuplicate) {
+  // A 2.0 x 0.9 x 0.8 sofa seen from one corner, then from the opposite one: the two views share
+  // only the edges, so Omega(new, old) < semantic_overlap and association makes a second object;
+  // their boxes coincide, so the duplicate step merges it into the first.
+  const Vec3 lo(1, 1, 0), hi(3, 1.9, 0.8);
+  ObjectsConfig off;
+  off.merge_box_overlap = 0.0;
+  for (const bool merge : {false, true}) {
+    ObjectLayer layer = makeLayer(merge ? ObjectsConfig{} : off);
+    layer.integrateCloud(cornerView(lo, hi, false, 1), "sofa", 0.9, 4, 1, 0.0);
+    const Association a = layer.integrateCloud(cornerView(lo, hi, true, 2), "couch", 0.9, 9, 2, 1.0);
+    EXPECT_EQ(a.kind, MatchKind::kNone);  // the views alone are not a match
+    if (!merge) {
+      EXPECT_EQ(layer.size(), 2u);
+      EXPECT_EQ(a.absorbed, 0);
+      continue;
+    }
+    EXPECT_EQ(a.absorbed, 1);
+    EXPECT_EQ(a.object_id, 1);  // the older object survives
+    ASSERT_EQ(layer.size(), 1u);
+    EXPECT_EQ(layer.absorbedCount(), 1);
+    const MappedObject& o = layer.objects()[0];
+    EXPECT_EQ(o.n_observations, 2);
+    EXPECT_TRUE(o.confirmed);
+    EXPECT_EQ(o.node_id, 4);
+    EXPECT_EQ(o.first_seen, 0.0);
+    EXPECT_EQ(o.last_seen, 1.0);
+    EXPECT_EQ(o.votes.size(), 2u);
+    EXPECT_NEAR(o.centroid.x(), 2.0, 0.05);
+    EXPECT_NEAR(o.centroid.y(), 1.45, 0.05);
+    EXPECT_NEAR(o.box.size().x(), 2.0, 0.05);
+    EXPECT_NEAR(o.box.size().y(), 0.9, 0.05);
+    // The absorbed id leads to the survivor; a third view now merges directly.
+    ASSERT_NE(layer.find(2), nullptr);
+    EXPECT_EQ(layer.find(2)->id, 1);
+    EXPECT_EQ(layer.find(3), nullptr);
+    EXPECT_EQ(layer.integrateCloud(cornerView(lo, hi, true, 3), "sofa", 0.9, 0, 0, 2.0).kind, MatchKind::kSemantic);
+    EXPECT_EQ(layer.size(), 1u);
+  }
+}
+
+TEST(ObjectLayer, OverlappingObjectsWithDifferentLabelsAreNotMerged) {
+  // A chair pushed under a table: its box lies inside the table's box, but the labels disagree.
+  ObjectLayer layer = makeLayer();
+  layer.integrateCloud(boxSurface(Vec3(0, 0, 0), Vec3(1.4, 0.9, 0.75)), "table", 0.9, 0, 0, 0.0);
+  layer.integrateCloud(boxSurface(Vec3(0.5, 0.2, 0.1), Vec3(0.9, 0.6, 0.55)), "chair", 0.9, 0, 0, 1.0);
+  EXPECT_EQ(layer.size(), 2u);
+  EXPECT_EQ(layer.absorbedCount(), 0);
+  EXPECT_GT(ObjectLayer::boxOverlap(layer.objects()[0].box, layer.objects()[1].box, 0.05), 0.9);
 }
 
 TEST(ObjectLayer, TooFewPointsAreRejected) {

@@ -210,6 +210,10 @@ struct ObjectsConfig {
   int min_points = 10;              // observations with fewer points are rejected
   int max_points_per_object = 5000; // above this an object's cloud is coarsened (voxel x2)
   int min_observations_to_confirm = 2;  // objects seen fewer times are tentative
+  // Duplicate merging: two objects whose labels agree (embedding cosine > semantic_cos) and whose
+  // boxes, each grown by voxel_size, overlap by more than this fraction of the smaller box are
+  // one object seen from two sides; the younger is absorbed by the older. 0 = never merge.
+  double merge_box_overlap = 0.3;
   template <class V> void visit(V& v) {
     v.field("association_radius", association_radius, 0.1, 20.0, "m");
     v.field("semantic_cos", semantic_cos, -1.0, 1.0, "cosine");
@@ -220,6 +224,7 @@ struct ObjectsConfig {
     v.field("min_points", min_points, 1, 1000000, "points");
     v.field("max_points_per_object", max_points_per_object, 10, 10000000, "points");
     v.field("min_observations_to_confirm", min_observations_to_confirm, 1, 1000, "observations");
+    v.field("merge_box_overlap", merge_box_overlap, 0.0, 1.0, "fraction of the smaller box, 0 = off");
   }
 };
 

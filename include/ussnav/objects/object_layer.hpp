@@ -5,7 +5,11 @@
 // radius grown by the largest object, then the exact box test; for small objects this is the
 // paper's centroid query, for a long sofa seen from one end it still finds the sofa). Priority:
 // semantic match (cosine > semantic_cos and Omega(new, old) > semantic_overlap), else geometric
-// match (Omega > geometric_overlap both ways), else a new object. Each object is anchored to the
+// match (Omega > geometric_overlap both ways), else a new object. Then duplicates are merged:
+// the object just changed absorbs (or is absorbed by) any object whose label agrees (cosine >
+// semantic_cos) and whose box overlaps its box by more than merge_box_overlap of the smaller
+// one (both grown by voxel_size); the older id survives and find() maps the absorbed id to it.
+// A surface seen from two sides rarely overlaps pointwise, but its boxes do. Each object is anchored to the
 // graph node where the UAV was when it was first seen and to that node's region. Not
 // thread-safe. Cost per detection: back-projection of its mask, O(|cloud|) per candidate whose
 // box touches the new cloud, and a kd-tree rebuild over centroids after a change (n log n).
@@ -13,6 +17,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -47,7 +52,8 @@ const char* toString(MatchKind k);
 struct Association {
   MatchKind kind = MatchKind::kNone;
   bool rejected = false;       // too few points: nothing was changed
-  int object_id = 0;           // merged into or created (0 when rejected)
+  int object_id = 0;           // merged into or created (0 when rejected); after absorption, the survivor
+  int absorbed = 0;            // duplicates merged away after this observation
   int candidates = 0;          // objects within association_radius
   double cosine = 0.0;         // of the chosen object (merges only)
   double overlap_new_old = 0;  // Omega(new, old)
@@ -56,6 +62,7 @@ struct Association {
 
 struct IntegrateStats {
   int created = 0, merged_semantic = 0, merged_geometric = 0, rejected = 0;
+  int absorbed = 0;  // duplicate objects merged into another
   IntegrateStats& operator+=(const IntegrateStats& o);
 };
 
@@ -76,8 +83,13 @@ class ObjectLayer {
                              double score, int anchor_node, int anchor_region, double time);
 
   const std::vector<MappedObject>& objects() const { return objects_; }
-  // nullptr when no object has this id.
+  // nullptr when no object ever had this id; an absorbed id gives the object that absorbed it.
   const MappedObject* find(int id) const;
+  // Objects merged away as duplicates so far.
+  int absorbedCount() const { return int(redirect_.size()); }
+  // Box overlap used for duplicates: intersection of a and b, each grown by `grow` on every side,
+  // over the smaller grown volume (0 when either box is empty).
+  static double boxOverlap(const Aabb& a, const Aabb& b, double grow);
   size_t size() const { return objects_.size(); }
   size_t confirmedCount() const;
   // Re-anchors every object's region from its node (the region layer renumbered its regions).
@@ -92,11 +104,17 @@ class ObjectLayer {
              const Embedding& v, double time);
   void create(const std::vector<Vec3f>& cloud, const std::string& label, double score, const Embedding& v,
               int node, int region, double time);
+  // Merges duplicates of objects_[index] (see the header); returns the survivor's index.
+  size_t absorbDuplicates(size_t index, int& absorbed);
+  void absorb(size_t into, size_t from);  // from's observations join into; from is erased
+  void refresh(size_t index);             // box, centroid, label, embedding from the state
 
   ObjectsConfig cfg_;
   std::shared_ptr<const TextEncoder> encoder_;
   std::vector<MappedObject> objects_;
   std::vector<State> state_;  // parallel to objects_
+  std::unordered_map<int, size_t> position_;  // id -> index in objects_
+  std::unordered_map<int, int> redirect_;     // absorbed id -> the id that absorbed it
   std::unique_ptr<CentroidIndex> index_;
   int next_id_ = 1;
 };
