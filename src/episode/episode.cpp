@@ -171,12 +171,19 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
   fopt.z_max = flight_z + 0.8;
   fopt.waypoint_z_min = flight_z - 0.3;
   fopt.waypoint_z_max = flight_z + 0.3;
+  // The margin of the last path flightPath found, and of the path being flown: the blocked-path
+  // checks use it, so a path planned through a narrow door is not dropped as blocked at once.
+  double last_clearance = fopt.clearance, path_clearance = fopt.clearance;
   auto flightPath = [&](const Vec3& a, const Vec3& b) {
+    last_clearance = fopt.clearance;
     auto p = planFlightPath(mapper.graph(), mapper.grid(), a, b, fopt);
-    if (!p && ep.clearance > cfg.sim.uav.radius + 0.1) {
+    // Narrower margins when the full one finds no way (doors of real houses are 0.8-0.9 m wide).
+    for (const double margin : {0.1, 0.05}) {
+      if (p || ep.clearance <= cfg.sim.uav.radius + margin) continue;
       FlightPathOptions narrow = fopt;
-      narrow.clearance = cfg.sim.uav.radius + 0.1;
+      narrow.clearance = cfg.sim.uav.radius + margin;
       p = planFlightPath(mapper.graph(), mapper.grid(), a, b, narrow);
+      last_clearance = narrow.clearance;
     }
     return p;
   };
@@ -184,12 +191,20 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
   Goal g;
   std::vector<Blacklisted> blacklist;
   std::map<int, double> failed_objects;  // object id -> retry time
+  std::map<int, int> object_failures;     // object id -> failed approaches (kMaxObjectTries: dropped)
+  std::map<int, int> object_transits;     // object id -> transit flights towards it
+  constexpr int kMaxObjectTries = 3, kMaxTransits = 2;
   bool approaching = false;
+  bool transit = false;  // approaching a graph node near the object, not the object itself
+  double last_transit_check = -1e9;
   int approach_object = -1;
   ApproachPose approach;
   double last_check = -1e9;
   int spins_left = -1;  // -1: not spinning; else yaw steps left before giving up
   double t = 0.0;
+  auto failObject = [&](int id) {
+    failed_objects[id] = ++object_failures[id] >= kMaxObjectTries ? 1e18 : t + ep.blacklist_s;
+  };
   double next_cov = 0.0;
   std::vector<ExplorationTarget> targets;
 
@@ -203,7 +218,8 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
       std::fprintf(stderr, "[t=%.1f] unreachable (%.2f %.2f %.2f) x%d\n", t, c.x(), c.y(), c.z(), int(times) + 1);
   };
   auto pendingRetry = [&] {
-    return std::any_of(blacklist.begin(), blacklist.end(), [&](const Blacklisted& b) { return b.until > t && b.until < 1e17; });
+    return std::any_of(blacklist.begin(), blacklist.end(), [&](const Blacklisted& b) { return b.until > t && b.until < 1e17; }) ||
+           std::any_of(failed_objects.begin(), failed_objects.end(), [&](const auto& f) { return f.second > t && f.second < 1e17; });
   };
   auto blacklisted = [&](const Vec3& c) {
     return std::any_of(blacklist.begin(), blacklist.end(),
@@ -267,6 +283,10 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
     bool end = false;
 
     // 1. A confirmed object of the goal category: approach it and declare.
+    if (approaching && transit && uav.idle() && (uav.pose().position - approach.position).norm() <= ep.goal_tolerance) {
+      approaching = transit = false;  // near the object now: look for an approach pose again below
+      uav.setPath({});
+    }
     if (approaching && uav.idle() && (uav.pose().position - approach.position).norm() <= ep.goal_tolerance) {
       const MappedObject* o = mapper.objects()->find(approach_object);
       R.found_object = FoundObject{approach_object, o ? o->label : "", o ? o->centroid : Vec3::Zero()};
@@ -274,11 +294,15 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
       R.end_reason = R.success ? "found" : "wrong_object";
       end = true;
     }
-    if (!end && !approaching && mapper.objects() && graph.size() > 0) {
+    // In transit, the object's own approach is tried again every replan period on the way.
+    const bool retry_transit = approaching && transit && t - last_transit_check >= ep.replan_period_s;
+    if (!end && (!approaching || retry_transit) && mapper.objects() && graph.size() > 0) {
+      if (retry_transit) last_transit_check = t;
       const MappedObject* best = nullptr;
       double best_d = 1e18;
       for (const MappedObject& o : mapper.objects()->objects()) {
         if (!o.confirmed || o.n_observations < ep.target_min_observations || !goal.matches(o.label)) continue;
+        if (retry_transit && mapper.objects()->find(approach_object) != &o) continue;
         auto it = failed_objects.find(o.id);
         if (it != failed_objects.end() && it->second > t) continue;
         if (!inGoalRoom(o)) continue;
@@ -291,21 +315,47 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
         for (const ApproachPose& ap : approachPoses(grid, gd, best->box, flight_z, cfg)) {
           const auto p = flightPath(uav.pose().position, ap.position);
           if (!p) continue;
-          approaching = true, approach_object = best->id, approach = ap;
+          approaching = true, transit = false, approach_object = best->id, approach = ap;
           approach.position = p->back();
           g = Goal{};
           g.active = true;
           g.path = *p;
           uav.setPath(*p);
+          path_clearance = last_clearance;
           ok = true;
           break;
         }
+        if (!ok && retry_transit) ok = true;  // keep flying the transit
+        if (!ok && object_transits[best->id] < kMaxTransits) {
+          // No pose the map can vouch for yet (the object was seen from afar, beyond the window or
+          // through a door): fly to the graph node nearest to it, from where the window covers it.
+          const int n = graph.nearestNode(best->centroid);
+          const Vec3 via = n >= 0 ? Vec3(graph.node(n).center.x(), graph.node(n).center.y(), flight_z) : Vec3::Zero();
+          if (n >= 0 && (via - best->centroid).norm() <= ep.transit_radius &&
+              (via - uav.pose().position).norm() > ep.goal_tolerance) {
+            if (const auto p = flightPath(uav.pose().position, via)) {
+              ++object_transits[best->id];
+              if (std::getenv("USSNAV_DEBUG_EPISODE"))
+                std::fprintf(stderr, "[t=%.1f] object %d: transit to node %d (%.2f %.2f), %zu points\n", t, best->id, n,
+                             via.x(), via.y(), p->size());
+              approaching = transit = true, approach_object = best->id, last_transit_check = t;
+              approach = ApproachPose{p->back(), std::atan2(best->centroid.y() - via.y(), best->centroid.x() - via.x()), 0.0};
+              g = Goal{};
+              g.active = true;
+              g.path = *p;
+              uav.setPath(*p);
+              path_clearance = last_clearance;
+              ok = true;
+            }
+          }
+        }
         if (!ok) {
           if (std::getenv("USSNAV_DEBUG_EPISODE"))
-            std::fprintf(stderr, "[t=%.1f] object %d (%s) at (%.2f %.2f %.2f): %zu approach poses, none reachable\n", t,
+            std::fprintf(stderr, "[t=%.1f] object %d (%s) at (%.2f %.2f %.2f): no approach (%zu poses, uav %.2f %.2f)\n", t,
                          best->id, best->label.c_str(), best->centroid.x(), best->centroid.y(), best->centroid.z(),
-                         approachPoses(grid, gd, best->box, flight_z, cfg).size());
-          failed_objects[best->id] = t + ep.blacklist_s;
+                         approachPoses(grid, gd, best->box, flight_z, cfg).size(), uav.pose().position.x(),
+                         uav.pose().position.y());
+          failObject(best->id);
           ++R.unreachable;
         }
       }
@@ -342,7 +392,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
       }
       if (g.active && !need && !uav.pathDone()) {
         // Every frame: the next metres of the path against what the map knows now.
-        const InflatedMap inflated(grid, cfg.sim.uav.radius + 0.1);
+        const InflatedMap inflated(grid, std::min(cfg.sim.uav.radius + 0.1, path_clearance));
         if (pathBlocked(inflated, uav.remainingPath(), 4.0)) need = true;
       }
       if (need && spins_left > 0 && !uav.idle()) need = false;  // finish the current spin step
@@ -427,6 +477,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
             g.patch_cells.clear();
             if (tg.kind == TargetKind::Unseen) g.patch_cells = patches[size_t(tg.source_id)].cells;
             uav.setPath(*p);
+            path_clearance = last_clearance;
             spins_left = -1;
             break;
           }
@@ -464,13 +515,13 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
         uav.setYawTarget(approach.yaw);
       else
         uav.clearYawTarget();
-      const InflatedMap inflated(grid, cfg.sim.uav.radius + 0.1);
+      const InflatedMap inflated(grid, std::min(cfg.sim.uav.radius + 0.1, path_clearance));
       if (!uav.pathDone() && pathBlocked(inflated, uav.remainingPath(), 4.0)) {
-        approaching = false;  // the map now shows an obstacle on the way: choose again
+        approaching = transit = false;  // the map now shows an obstacle on the way: choose again
         uav.setPath({});
       } else if (uav.pathDone() && (uav.pose().position - approach.position).norm() > ep.goal_tolerance) {
-        approaching = false;  // dropped (collision): re-plan
-        failed_objects[approach_object] = t + ep.blacklist_s;
+        approaching = transit = false;  // dropped (collision): re-plan
+        failObject(approach_object);
       }
     }
     times.add("planning", plan_sw.ms());

@@ -319,6 +319,7 @@ struct EpisodeConfig {
   int target_min_observations = 3;    // an object counts as found after this many observations
   double goal_similarity = 0.85;      // object label matches the goal at this text cosine
   double blacklist_s = 20.0;          // an unreachable target is skipped for this long, s
+  double transit_radius = 3.0;        // an object with no approach pose yet: fly to a graph node this near it, m
   double yaw_weight = 1.0;            // cost = max(path / speed, yaw_weight * yaw / yaw rate)
   double clearance = 0.4;             // flight paths keep this from mapped obstacles, m
   bool fuse_depth = true;             // the depth camera feeds the grid too (LiDAR blind cone)
@@ -333,6 +334,7 @@ struct EpisodeConfig {
     v.field("target_min_observations", target_min_observations, 1, 1000, "observations");
     v.field("goal_similarity", goal_similarity, 0.0, 1.0, "cosine");
     v.field("blacklist_s", blacklist_s, 0.0, 1e4, "s");
+    v.field("transit_radius", transit_radius, 0.0, 100.0, "m");
     v.field("yaw_weight", yaw_weight, 0.0, 100.0, "");
     v.field("clearance", clearance, 0.0, 5.0, "m");
     v.field("fuse_depth", fuse_depth);
