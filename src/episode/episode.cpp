@@ -309,19 +309,23 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
         const double d = (o.centroid - uav.pose().position).norm();
         if (d < best_d) best_d = d, best = &o;
       }
+      // Fly `path` to `pose` (the path's end is where the UAV will really stop).
+      auto startApproach = [&](int id, ApproachPose pose, const std::vector<Vec3>& path, bool is_transit) {
+        approaching = true, transit = is_transit, approach_object = id, approach = pose;
+        approach.position = path.back();
+        g = Goal{};
+        g.active = true;
+        g.path = path;
+        uav.setPath(path);
+        path_clearance = last_clearance;
+      };
       if (best) {
         const GraphDistances gd(graph, grid, uav.pose().position);
         bool ok = false;
         for (const ApproachPose& ap : approachPoses(grid, gd, best->box, flight_z, cfg)) {
           const auto p = flightPath(uav.pose().position, ap.position);
           if (!p) continue;
-          approaching = true, transit = false, approach_object = best->id, approach = ap;
-          approach.position = p->back();
-          g = Goal{};
-          g.active = true;
-          g.path = *p;
-          uav.setPath(*p);
-          path_clearance = last_clearance;
+          startApproach(best->id, ap, *p, false);
           ok = true;
           break;
         }
@@ -338,13 +342,10 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
               if (std::getenv("USSNAV_DEBUG_EPISODE"))
                 std::fprintf(stderr, "[t=%.1f] object %d: transit to node %d (%.2f %.2f), %zu points\n", t, best->id, n,
                              via.x(), via.y(), p->size());
-              approaching = transit = true, approach_object = best->id, last_transit_check = t;
-              approach = ApproachPose{p->back(), std::atan2(best->centroid.y() - via.y(), best->centroid.x() - via.x()), 0.0};
-              g = Goal{};
-              g.active = true;
-              g.path = *p;
-              uav.setPath(*p);
-              path_clearance = last_clearance;
+              last_transit_check = t;
+              startApproach(best->id,
+                            ApproachPose{via, std::atan2(best->centroid.y() - via.y(), best->centroid.x() - via.x()), 0.0},
+                            *p, true);
               ok = true;
             }
           }
