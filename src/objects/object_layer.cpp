@@ -47,7 +47,8 @@ struct ObjectLayer::CentroidIndex {
   Adaptor adaptor{&centroids};
   std::unique_ptr<Tree> tree;
   double max_extent = 0.0;
-  bool dirty = true;
+  bool dirty = true;        // some centroid moved or an object was added since the build
+  bool rows_valid = false;  // row i is still objects_[i] (false once an object was erased)
 
   void rebuild(const std::vector<MappedObject>& objects) {
     centroids.clear();
@@ -60,6 +61,7 @@ struct ObjectLayer::CentroidIndex {
     tree = std::make_unique<Tree>(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(10));
     tree->buildIndex();
     dirty = false;
+    rows_valid = true;
   }
 };
 
@@ -239,7 +241,18 @@ size_t ObjectLayer::absorbDuplicates(size_t index, int& absorbed) {
     const MappedObject& o = objects_[index];
     int best = -1;
     double best_overlap = cfg_.merge_box_overlap;
-    for (int k : candidatesNear(o.centroid)) {
+    // Only the object just changed has moved (or is new) since the index was built, and it is
+    // the query itself: the index still finds every other object, so no rebuild is needed
+    // until an absorption erases a row. The index stays marked dirty for the next association.
+    std::vector<int> near;
+    if (index_->tree && index_->rows_valid && index_->dirty) {
+      index_->dirty = false;
+      near = candidatesNear(o.centroid);
+      index_->dirty = true;
+    } else {
+      near = candidatesNear(o.centroid);
+    }
+    for (int k : near) {
       if (size_t(k) == index) continue;
       const MappedObject& other = objects_[size_t(k)];
       if (cosineSimilarity(o.embedding, other.embedding) <= cfg_.semantic_cos) continue;
@@ -277,6 +290,7 @@ void ObjectLayer::absorb(size_t into, size_t from) {
   state_.erase(state_.begin() + std::ptrdiff_t(from));
   for (size_t i = from; i < objects_.size(); ++i) position_[objects_[i].id] = i;
   index_->dirty = true;
+  index_->rows_valid = false;
 }
 
 IntegrateStats ObjectLayer::integrate(const std::vector<Detection>& detections, const DepthFrame& frame,
