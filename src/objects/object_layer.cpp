@@ -96,6 +96,19 @@ void ObjectLayer::setRegionOf(const std::function<int(int)>& region_of) {
   for (auto& o : objects_) o.region_id = region_of(o.node_id);
 }
 
+int ObjectLayer::reanchor(const std::function<int(const MappedObject&)>& anchor_of,
+                          const std::function<int(int)>& region_of) {
+  int moved = 0;
+  for (auto& o : objects_) {
+    const int node = anchor_of(o);
+    if (node < 0 || node == o.node_id) continue;
+    o.node_id = node;
+    o.region_id = region_of(node);
+    ++moved;
+  }
+  return moved;
+}
+
 std::vector<int> ObjectLayer::candidatesNear(const Vec3& c) {
   std::vector<int> out;
   if (objects_.empty()) return out;

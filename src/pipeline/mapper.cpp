@@ -1,5 +1,6 @@
 #include "ussnav/pipeline/mapper.hpp"
 
+#include <algorithm>
 #include <numeric>
 
 namespace ussnav {
@@ -23,6 +24,29 @@ Mapper::~Mapper() = default;
 int Mapper::anchorNode(const Vec3& p) const {
   const int inside = graph_.containingNode(p);
   return inside >= 0 ? inside : graph_.nearestNode(p);
+}
+
+int Mapper::anchorObject(const MappedObject& o) const {
+  if (o.box.empty()) return -1;
+  const Aabb w = grid_.window();
+  if (!w.contains(o.box.min) || !w.contains(o.box.max)) return -1;  // the grid cannot tell any more
+  const double res = grid_.resolution();
+  Aabb near = o.box;  // the object's own voxels may stick out of its box by a voxel
+  near.min.array() -= res;
+  near.max.array() += res;
+  const Vec3 c = o.box.center();
+  std::vector<std::pair<double, int>> order;
+  for (int id : graph_.nodesWithin(c, kObjectAnchorRadius + 0.5 * o.box.size().norm())) {
+    const Vec3& n = graph_.node(id).center;
+    const double d = (n.cwiseMax(o.box.min).cwiseMin(o.box.max) - n).norm();
+    if (d <= kObjectAnchorRadius && w.contains(n)) order.push_back({d, id});
+  }
+  std::sort(order.begin(), order.end());
+  for (const auto& [d, id] : order) {
+    const RayHit h = grid_.castRay(graph_.node(id).center, c, false);
+    if (!h.blocked || near.contains(h.point)) return id;
+  }
+  return -1;
 }
 
 MapperFrameReport Mapper::process(const MapperFrame& f) {
@@ -78,6 +102,9 @@ MapperFrameReport Mapper::process(const MapperFrame& f) {
     const int node = anchorNode(f.pose.position);
     const int region = node >= 0 ? regions_.regionOf(node) : -1;
     rep.objects = objects_->integrate(dets, *f.depth, node, region, f.time);
+    if (opt_.skeleton)
+      objects_->reanchor([this](const MappedObject& o) { return anchorObject(o); },
+                         [this](int n) { return n >= 0 ? regions_.regionOf(n) : -1; });
     times_.add("objects", sw2.ms());
   }
   rep.total_ms = total.ms();

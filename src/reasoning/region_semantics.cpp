@@ -84,7 +84,8 @@ std::vector<RegionSummary> summarizeRegions(const SceneGraph& g) {
     out.push_back(std::move(s));
   }
   for (const SgObject& o : g.objects) {
-    const int i = nearestNodeIndex(g, o.centroid);
+    int i = o.node_id >= 0 ? g.nodeIndex(o.node_id) : -1;
+    if (i < 0) i = nearestNodeIndex(g, o.centroid);
     if (i < 0) continue;
     const auto rit = region_of.find(g.nodes[size_t(i)].id);
     if (rit == region_of.end()) continue;

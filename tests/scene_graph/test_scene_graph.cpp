@@ -203,5 +203,43 @@ TEST(SceneGraphPipeline, MapperRegionsCoverAllNodesAndRoundTrip) {
   EXPECT_EQ(loadSceneGraph(p), sg);
 }
 
+
+// An object seen through a door belongs to a node on its own side of the wall (one that sees it),
+// not to the node the UAV looked from; an object in the UAV's room stays in that room.
+TEST(SceneGraphPipeline, ObjectsSeenThroughADoorAnchorBeyondIt) {
+  World w = test::twoRooms(true);
+  const int chair_b = test::addObject(w, "chair", Vec3(7.0, 2.0, 0.45), Vec3(0.3, 0.3, 0.45));
+  const int table_a = test::addObject(w, "table", Vec3(2.0, 3.3, 0.4), Vec3(0.5, 0.4, 0.4));
+  Config cfg;
+  Simulator sim(w, cfg, 3);
+  auto det = std::make_unique<OracleDetector>(sim.instanceLabels(), OracleRealism::fromConfig(cfg.perception), 3);
+  Mapper mapper(cfg, MapperOptions{}, std::move(det));
+  double t = 0.0;
+  for (int i = 0; i < 40; ++i) {  // forward in room A (x < 5) up to the door, looking through it
+    const Pose pose{Vec3(1.0 + 3.6 * std::min(i, 30) / 30.0, 2.0, 1.2), 0.0};
+    SensedFrame f = sim.sense(pose, t);
+    mapper.process({f.pose, f.scan ? &*f.scan : nullptr, &f.depth, t});
+    t += 0.2;
+  }
+  const ConnectivityGraph& g = mapper.graph();
+  ASSERT_TRUE(mapper.objects());
+  bool saw_chair = false, saw_table = false;
+  for (const MappedObject& o : mapper.objects()->objects()) {
+    ASSERT_GE(o.node_id, 0) << o.label;
+    const Vec3& n = g.node(o.node_id).center;
+    EXPECT_EQ(o.region_id, mapper.regions().regionOf(o.node_id));
+    if (o.label == "chair" && (o.centroid - w.objects[size_t(chair_b - 1)].box.center).norm() < 0.6) {
+      saw_chair = true;
+      EXPECT_GT(n.x(), 5.05) << "chair anchored to node " << o.node_id << " at " << n.transpose();
+    }
+    if (o.label == "table" && (o.centroid - w.objects[size_t(table_a - 1)].box.center).norm() < 0.8) {
+      saw_table = true;
+      EXPECT_LT(n.x(), 4.95) << "table anchored to node " << o.node_id << " at " << n.transpose();
+    }
+  }
+  EXPECT_TRUE(saw_chair);
+  EXPECT_TRUE(saw_table);
+}
+
 }  // namespace
 }  // namespace ussnav

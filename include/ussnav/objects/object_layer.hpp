@@ -39,7 +39,7 @@ struct MappedObject {
   Aabb box;                                            // of cloud
   int n_observations = 0;
   bool confirmed = false;                              // n_observations >= min_observations_to_confirm
-  int node_id = -1;                                    // graph node where first seen
+  int node_id = -1;                                    // graph node that sees it (see Mapper::anchorObject)
   int region_id = -1;                                  // that node's region
   double first_seen = 0.0, last_seen = 0.0;            // seconds
   double voxel_size = 0.0;                             // grows when the cloud is coarsened
@@ -94,6 +94,10 @@ class ObjectLayer {
   size_t confirmedCount() const;
   // Re-anchors every object's region from its node (the region layer renumbered its regions).
   void setRegionOf(const std::function<int(int node_id)>& region_of);
+  // Moves each object to the node `anchor_of` names (-1: keep the current one) and sets its
+  // region from that node. Returns how many objects changed node.
+  int reanchor(const std::function<int(const MappedObject&)>& anchor_of,
+               const std::function<int(int node_id)>& region_of);
   const ObjectsConfig& config() const { return cfg_; }
 
  private:

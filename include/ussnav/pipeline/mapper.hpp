@@ -63,6 +63,12 @@ class Mapper {
   int64_t frames() const { return frames_; }
   // Graph node the UAV is in (or nearest to), -1 before the first node exists.
   int anchorNode(const Vec3& p) const;
+  // The node an object belongs to: the node nearest to its box (within kObjectAnchorRadius)
+  // whose centre sees the box in the grid, so a stove seen through the kitchen door joins the
+  // kitchen's nodes, not the corridor the UAV looked from. -1 when the box is outside the
+  // grid window or no node sees it (the object keeps its node).
+  int anchorObject(const MappedObject& o) const;
+  static constexpr double kObjectAnchorRadius = 3.0;
 
  private:
   Config cfg_;

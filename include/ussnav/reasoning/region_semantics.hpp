@@ -44,8 +44,9 @@ struct RegionSemantics {
   uint64_t key = 0;                 // contentKey() of the summary it describes
 };
 
-// Regions of a snapshot with their objects: each object goes to the region of the graph node
-// whose centroid is nearest to the object's centroid in the plane. Ascending region id.
+// Regions of a snapshot with their objects: each object goes to the region of its anchor node
+// (the node that sees it, so a stove seen through a door joins the kitchen), or, without one,
+// of the node whose centroid is nearest to the object's centroid in the plane. Ascending id.
 std::vector<RegionSummary> summarizeRegions(const SceneGraph& g);
 // The region a point belongs to (region of the nearest node in the plane), -1 without nodes.
 int regionAt(const SceneGraph& g, const Vec3& p);
