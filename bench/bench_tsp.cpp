@@ -1,4 +1,4 @@
-// TSP over viewpoints at 10, 30 and 100 points (issue: exploration speed).
+// TSP and search tour over viewpoints at 10, 30 and 100 points (issue: exploration speed).
 #include <benchmark/benchmark.h>
 
 #include "ussnav/core/random.hpp"
@@ -22,5 +22,16 @@ static void BM_OpenTsp(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(solveOpenTsp(c));
 }
 BENCHMARK(BM_OpenTsp)->Arg(10)->Arg(30)->Arg(100)->Unit(benchmark::kMillisecond);
+
+// The search tour (gain-weighted arrival times) of the full planner, gains 10..400.
+static void BM_SearchTour(benchmark::State& state) {
+  const int n = int(state.range(0)) + 1;
+  const CostMatrix c = costs(n);
+  Rng rng(7);
+  std::vector<double> w(size_t(n), 0.0);
+  for (int i = 1; i < n; ++i) w[size_t(i)] = rng.uniform(10, 400);
+  for (auto _ : state) benchmark::DoNotOptimize(solveSearchTour(c, w));
+}
+BENCHMARK(BM_SearchTour)->Arg(10)->Arg(30)->Arg(100)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

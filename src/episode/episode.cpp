@@ -245,7 +245,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
     if (goal_room < 0) return true;
     refreshSemantics();
     const auto sem = labeler->semantics();
-    const auto it = sem.find(regionAt(snapshot, o.centroid));
+    const auto it = sem.find(o.region_id >= 0 ? o.region_id : regionAt(snapshot, o.centroid));
     return it != sem.end() && priors->roomIndex(it->second.label) == goal_room;
   };
 
@@ -466,7 +466,11 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
             std::fprintf(stderr, "  plan -> %s (%.2f %.2f) vp (%.2f %.2f) path", toString(tg.kind), tg.centroid.x(),
                          tg.centroid.y(), vp.position.x(), vp.position.y());
             for (const Vec3& q : *p) std::fprintf(stderr, " (%.2f %.2f %.2f)", q.x(), q.y(), q.z());
-            std::fprintf(stderr, "\n");
+            std::fprintf(stderr, "\n    gain %.0f region %d: %s%s%s\n", tg.gain, tg.region, choice.note.c_str(),
+                         decider ? " | " : "", decider ? decider->lastDecision().reason.c_str() : "");
+            for (const ExplorationTarget& o : targets)
+              std::fprintf(stderr, "      %s (%.2f %.2f) gain %.0f region %d\n", toString(o.kind), o.centroid.x(),
+                           o.centroid.y(), o.gain, o.region);
           }
           if (p) {
             g.active = true;

@@ -24,9 +24,12 @@ double moveCost(const PlanInput& in, double dist, double yaw_from, double yaw_to
 
 double utilityOf(const ExplorationTarget& t, const TargetCost& c) { return t.gain / std::max(c.cost_s, 0.1); }
 
-// Open TSP from the UAV over `ids` (indices into targets), each at its best viewpoint. Pairwise
-// costs use one graph Dijkstra per target.
-std::vector<int> tourOver(const PlanInput& in, const std::vector<TargetCost>& costs, const std::vector<int>& ids) {
+// Open tour from the UAV over `ids` (indices into targets), each at its best viewpoint. Pairwise
+// costs use one graph Dijkstra per target. `search`: minimise the gain-weighted arrival times
+// (solveSearchTour) instead of the distance. `first` (an index into ids, -1 none): the tour
+// starts there and orders the rest from its viewpoint.
+std::vector<int> tourOver(const PlanInput& in, const std::vector<TargetCost>& costs, const std::vector<int>& ids,
+                          bool search = false, int first = -1) {
   const auto& T = *in.targets;
   const size_t n = ids.size() + 1;
   CostMatrix m(n, std::vector<double>(n, 0.0));
@@ -45,9 +48,20 @@ std::vector<int> tourOver(const PlanInput& in, const std::vector<TargetCost>& co
   for (auto& row : m)
     for (double& c : row)
       if (!std::isfinite(c)) c = 1e6;
-  const TspResult r = solveOpenTsp(m);
+  // Nodes of the problem solved: the start (the UAV, or `first`), then the others.
+  std::vector<size_t> node{first >= 0 ? size_t(first) + 1 : 0};
+  for (size_t i = 1; i < n; ++i)
+    if (int(i) - 1 != first) node.push_back(i);
+  CostMatrix sub(node.size(), std::vector<double>(node.size(), 0.0));
+  std::vector<double> w(node.size(), 0.0);
+  for (size_t a = 0; a < node.size(); ++a) {
+    if (a > 0) w[a] = std::max(0.0, T[size_t(ids[node[a] - 1])].gain);
+    for (size_t b = 0; b < node.size(); ++b) sub[a][b] = a == b ? 0.0 : m[node[a]][node[b]];
+  }
+  const TspResult r = search ? solveSearchTour(sub, w) : solveOpenTsp(sub);
   std::vector<int> tour;
-  for (int k : r.order) tour.push_back(ids[size_t(k - 1)]);
+  if (first >= 0) tour.push_back(ids[size_t(first)]);
+  for (int k : r.order) tour.push_back(ids[node[size_t(k)] - 1]);
   return tour;
 }
 
@@ -111,6 +125,7 @@ class FullPlanner final : public ExplorationPlanner {
       rc.gain += t.gain;
       if (t.kind == TargetKind::Frontier) rc.frontier_gain += t.gain;
       rc.cost_s = std::min(rc.cost_s, costs[i].cost_s);
+      rc.best_utility = std::max(rc.best_utility, utilityOf(t, costs[i]));
     }
     if (by_region.empty()) return c;
     std::vector<RegionCandidate> cands;
@@ -126,22 +141,30 @@ class FullPlanner final : public ExplorationPlanner {
     }
     if (!by_region.count(region)) {
       // Default coarse level: stay in the committed region while it has targets, else the region
-      // with the best total utility.
+      // holding the best target (gain / cost).
       if (by_region.count(committed_)) {
         region = committed_;
         why = "committed region";
       } else {
         double best = -1.0;
         for (const RegionCandidate& rc : cands)
-          if (rc.utility > best) best = rc.utility, region = rc.region;
-        why = "best region utility";
+          if (rc.best_utility > best) best = rc.best_utility, region = rc.region;
+        why = "best target utility";
       }
     }
     committed_ = region;
+    // Fine level: the first stop is the region's best gain / cost target (the frontier
+    // planner's criterion, inside the region); the tour orders the rest from there.
     std::vector<int> ids;
+    int first = -1;
+    double best_u = -1.0;
     for (size_t i = 0; i < costs.size(); ++i)
-      if (std::isfinite(costs[i].cost_s) && (*in.targets)[i].region == region) ids.push_back(int(i));
-    c.tour = tourOver(in, costs, ids);
+      if (std::isfinite(costs[i].cost_s) && (*in.targets)[i].region == region) {
+        const double u = utilityOf((*in.targets)[i], costs[i]);
+        if (u > best_u) best_u = u, first = int(ids.size());
+        ids.push_back(int(i));
+      }
+    c.tour = tourOver(in, costs, ids, in.episode_cfg->tour == "search", first);
     c.target = c.tour.front();
     c.viewpoint = costs[size_t(c.target)].viewpoint;
     c.cost_s = costs[size_t(c.target)].cost_s;

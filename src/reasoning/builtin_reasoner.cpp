@@ -14,7 +14,7 @@ namespace {
 
 constexpr double kUniformWeight = 0.5;  // mixed into a region's room distribution
 constexpr double kOtherRoom = 0.05;     // affinity factor of rooms that break a room constraint
-constexpr double kStay = 1.5;           // value factor of the current region
+constexpr double kStay = 1.2;           // value factor of the region chosen last (else the current one)
 constexpr double kHallwayElongation = 3.0;
 
 std::string article(const std::string& w) {
@@ -121,11 +121,16 @@ CoarseDecision BuiltinReasoner::chooseRegion(const CoarseQuery& q) {
   CoarseDecision d;
   double best = -1.0;
   double best_s = 0.0;
+  // Commitment: the region chosen last keeps a bonus while it has frontiers (values change a
+  // little every frame as the UAV moves; without it two far regions can win in turn and the
+  // UAV flies back and forth); before any choice, or once it is done, the current region.
+  const RegionState* last = q.find(q.last_choice);
+  const int stay = last && last->frontiers > 0 && last->cost_s >= 0.0 ? q.last_choice : q.current_region;
   for (const RegionState& r : q.regions) {
     if (r.frontiers <= 0 || r.cost_s < 0.0) continue;
     const double s = targetChance(q, r);
-    double v = (s + 0.02) * r.gain / std::max(r.cost_s, 1.0);
-    if (r.id == q.current_region) v *= kStay;
+    double v = (s + 0.02) * r.best_utility;
+    if (r.id == stay) v *= kStay;
     if (v > best) best = v, d.region = r.id, best_s = s;
   }
   if (d.region < 0) {

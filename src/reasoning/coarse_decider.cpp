@@ -46,6 +46,7 @@ int CoarseDecider::choose(const PlanInput& in, const std::vector<RegionCandidate
   CoarseQuery q;
   q.instruction = instruction_;
   q.current_region = current;
+  q.last_choice = committed_;
   q.history.assign(history_.size() > 20 ? history_.end() - 20 : history_.begin(), history_.end());
   const double speed = in.uav_cfg ? std::max(in.uav_cfg->max_speed, 0.1) : 1.0;
   for (const RegionSummary& s : regions_) {
@@ -63,6 +64,7 @@ int CoarseDecider::choose(const PlanInput& in, const std::vector<RegionCandidate
       r.gain = c->gain;
       r.frontier_gain = c->frontier_gain;
       r.cost_s = c->cost_s;
+      r.best_utility = c->best_utility;
       r.distance_m = c->cost_s * speed;
     }
     if (auto v = visits_.find(s.id); v != visits_.end()) r.visits = v->second;

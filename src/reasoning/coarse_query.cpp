@@ -32,6 +32,7 @@ nlohmann::json toJson(const CoarseQuery& q) {
           {"targets", q.instruction.targets},
           {"room_constraint", q.instruction.room},
           {"current_region", q.current_region},
+          {"last_choice", q.last_choice},
           {"visit_history", q.history},
           {"regions", regions},
           {"room_adjacency_prior", prior}};

@@ -116,4 +116,46 @@ TEST(Planners, FullPicksTheBestRegionAndStaysInIt) {
   EXPECT_EQ(q->choose(s.input(t2, Vec3(2.0, 2.0, 1.2))).region, 0);
 }
 
+TEST(Planners, FullFliesToTheRegionsBestTargetAndToursTheRestBySearchOrder) {
+  // All in region 1 (room B). From the UAV at the door: a sliver 0.5 m away (gain 5), a big
+  // opening 2 m away (gain 300), and beyond it two more. Gain / cost picks the opening first.
+  Scene s;
+  std::vector<ExplorationTarget> t = {s.target(Vec3(6.0, 2.0, 1.2), 5, 1), s.target(Vec3(7.5, 2.0, 1.2), 300, 1),
+                                      s.target(Vec3(8.5, 3.0, 1.2), 40, 1), s.target(Vec3(8.5, 1.0, 1.2), 200, 1)};
+  const PlanInput in = s.input(t, Vec3(5.5, 2.0, 1.2));
+  const auto costs = targetCosts(in);
+  int best = 0;
+  for (int i = 1; i < 4; ++i)
+    if (t[size_t(i)].gain / std::max(costs[size_t(i)].cost_s, 0.1) > t[size_t(best)].gain / std::max(costs[size_t(best)].cost_s, 0.1))
+      best = i;
+  ASSERT_EQ(best, 1);
+  const PlanChoice c = makePlanner("full")->choose(in);
+  EXPECT_EQ(c.region, 1);
+  EXPECT_EQ(c.target, 1);
+  ASSERT_EQ(c.tour.size(), 4u);
+  EXPECT_EQ(c.tour.front(), 1);
+  std::vector<int> sorted = c.tour;
+  std::sort(sorted.begin(), sorted.end());
+  EXPECT_EQ(sorted, (std::vector<int>{0, 1, 2, 3}));
+  // The rest (0, 2, 3) is the optimal search order from the opening's viewpoint: brute force
+  // over the same cost model.
+  const std::vector<int> rest{0, 2, 3};
+  CostMatrix m(4, std::vector<double>(4, 0.0));
+  std::vector<double> w{0, 5, 40, 200};
+  std::vector<Vec3> at{t[1].viewpoints[0].position};
+  for (int k : rest) at.push_back(t[size_t(k)].viewpoints[0].position);
+  for (size_t i = 0; i < 4; ++i) {
+    const GraphDistances gd(s.graph, s.rooms.grid, at[i]);
+    for (size_t j = 0; j < 4; ++j)
+      if (i != j) m[i][j] = gd.toPoint(at[j]) / s.uav.max_speed;
+  }
+  std::vector<int> order;
+  for (size_t k = 1; k < 4; ++k) order.push_back(int(std::find(rest.begin(), rest.end(), c.tour[k]) - rest.begin()) + 1);
+  std::vector<int> perm{1, 2, 3};
+  double opt = 1e300;
+  do opt = std::min(opt, searchTourCost(m, w, perm));
+  while (std::next_permutation(perm.begin(), perm.end()));
+  EXPECT_NEAR(searchTourCost(m, w, order), opt, 1e-6);
+}
+
 TEST(Planners, UnknownNameIsAnInputError) { EXPECT_THROW(makePlanner("astar"), InputError); }

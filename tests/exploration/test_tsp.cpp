@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "ussnav/core/random.hpp"
 #include "ussnav/core/types.hpp"
@@ -94,4 +96,81 @@ TEST(Tsp, RejectsBadMatrices) {
   EXPECT_THROW(solveOpenTsp({{0, 1}, {1}}), std::invalid_argument);
   EXPECT_THROW(solveOpenTsp({{0, -1}, {1, 0}}), std::invalid_argument);
   EXPECT_EQ(solveOpenTsp({{0}}).order.size(), 0u);
+}
+
+namespace {
+// Brute force over all orders for the search objective (n - 1 <= 8).
+double bruteSearch(const CostMatrix& c, const std::vector<double>& w) {
+  std::vector<int> perm(c.size() - 1);
+  std::iota(perm.begin(), perm.end(), 1);
+  double best = 1e300;
+  do best = std::min(best, searchTourCost(c, w, perm));
+  while (std::next_permutation(perm.begin(), perm.end()));
+  return perm.empty() ? 0.0 : best;
+}
+std::vector<double> randomWeights(int n, uint64_t seed) {
+  Rng rng(seed);
+  std::vector<double> w(n);
+  for (double& x : w) x = rng.uniform(0, 300);
+  return w;
+}
+}  // namespace
+
+TEST(SearchTour, ObjectiveMatchesHandComputedArrivals) {
+  // Start 0 at x=0, targets at x = 1 (weight 1), 2 (weight 10). Order 1,2: arrivals 1 and 2 ->
+  // 1*1 + 10*2 = 21. Order 2,1: arrivals 2 and 3 -> 10*2 + 1*3 = 23.
+  const std::vector<double> x{0, 1, 2};
+  CostMatrix c(3, std::vector<double>(3));
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) c[i][j] = std::abs(x[i] - x[j]);
+  const std::vector<double> w{99, 1, 10};  // weight of the start is ignored
+  EXPECT_DOUBLE_EQ(searchTourCost(c, w, {1, 2}), 21.0);
+  EXPECT_DOUBLE_EQ(searchTourCost(c, w, {2, 1}), 23.0);
+  EXPECT_EQ(solveSearchTour(c, w).order, (std::vector<int>{1, 2}));
+}
+
+TEST(SearchTour, LargeTargetBeforeANearerSliver) {
+  // A sliver 1 m to the left (weight 1), a big unknown room 3 m to the right (weight 100). The
+  // distance TSP takes the sliver first (1 + 4 = 5 < 3 + 4 = 7); the search tour flies to the
+  // room first: 100*3 + 1*7 = 307 < 1*1 + 100*5 = 501.
+  const std::vector<double> x{0, -1, 3};
+  CostMatrix c(3, std::vector<double>(3));
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) c[i][j] = std::abs(x[i] - x[j]);
+  const std::vector<double> w{0, 1, 100};
+  EXPECT_EQ(solveOpenTsp(c).order, (std::vector<int>{1, 2}));
+  const TspResult s = solveSearchTour(c, w);
+  EXPECT_EQ(s.order, (std::vector<int>{2, 1}));
+  EXPECT_DOUBLE_EQ(s.cost, 307.0);
+  // Equal weights: the search tour still differs from the distance tour only by its objective.
+  EXPECT_EQ(solveSearchTour(c, {0, 1, 1}).order, (std::vector<int>{1, 2}));
+}
+
+TEST(SearchTour, ExactMatchesBruteForceAndHeuristicIsClose) {
+  int optimal = 0, total = 0;
+  for (int n = 1; n <= 8; ++n)
+    for (uint64_t seed = 1; seed <= 4; ++seed)
+      for (bool asym : {false, true}) {
+        const CostMatrix c = randomCosts(n + 1, seed * 17 + n, asym);
+        const auto w = randomWeights(n + 1, seed * 5 + n);
+        const double bf = bruteSearch(c, w);
+        const TspResult dp = solveSearchTour(c, w);
+        EXPECT_TRUE(dp.exact);
+        EXPECT_NEAR(dp.cost, bf, 1e-6 * std::max(1.0, bf)) << "n=" << n << " seed=" << seed;
+        EXPECT_NEAR(searchTourCost(c, w, dp.order), dp.cost, 1e-9 * std::max(1.0, bf));
+        const TspResult h = solveSearchTour(c, w, 0);
+        EXPECT_FALSE(h.exact);
+        EXPECT_GE(h.cost, bf - 1e-6 * std::max(1.0, bf));
+        EXPECT_LT(h.cost, 1.15 * bf + 1e-9);
+        optimal += std::abs(h.cost - bf) <= 1e-6 * std::max(1.0, bf);
+        ++total;
+      }
+  EXPECT_GE(optimal, total * 3 / 4);
+}
+
+TEST(SearchTour, RejectsBadWeights) {
+  const CostMatrix c{{0, 1}, {1, 0}};
+  EXPECT_THROW(solveSearchTour(c, {0}), std::invalid_argument);
+  EXPECT_THROW(solveSearchTour(c, {0, -1}), std::invalid_argument);
+  EXPECT_EQ(solveSearchTour({{0}}, {0}).order.size(), 0u);
 }

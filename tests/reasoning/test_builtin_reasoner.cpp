@@ -36,6 +36,7 @@ RegionState state(int id, std::vector<std::string> objects, int frontiers = 3, d
   r.frontiers = frontiers;
   r.gain = gain;
   r.cost_s = frontiers > 0 ? cost : -1.0;
+  r.best_utility = frontiers > 0 ? gain / cost : 0.0;  // as if one target held all the gain
   return r;
 }
 
@@ -93,8 +94,10 @@ TEST(BuiltinReasoner, CostAndRoomConstraintsCount) {
   CoarseQuery q = house("bed");
   q.regions[1].cost_s = 200.0;
   q.regions[1].gain = 5.0;
+  q.regions[1].best_utility = 5.0 / 200.0;
   q.regions[3].gain = 300.0;
   q.regions[3].cost_s = 5.0;
+  q.regions[3].best_utility = 300.0 / 5.0;
   EXPECT_EQ(R.chooseRegion(q).region, 4);
   // A sofa in the living room: not the kitchen region even when it is the only other option.
   CoarseQuery s = house("the sofa in the living room");
@@ -110,6 +113,24 @@ TEST(BuiltinReasoner, CostAndRoomConstraintsCount) {
   EXPECT_EQ(R.chooseRegion(none).fault, "no_frontiers");
 }
 
+TEST(BuiltinReasoner, KeepsTheRegionItChoseUnlessAnotherIsClearlyBetter) {
+  // Two bare regions, equal chance: the best target of region 5 is worth 100/10, of region 6
+  // 110/10. The UAV stands in neither (current region 4, nothing left there).
+  BuiltinReasoner R(priors());
+  CoarseQuery q;
+  q.instruction = interpretInstruction("bed", *priors());
+  q.regions = {state(4, {}, 0), state(5, {}, 3, 100, 10), state(6, {}, 3, 110, 10)};
+  q.current_region = 4;
+  EXPECT_EQ(R.chooseRegion(q).region, 6);  // no earlier choice: the better one
+  q.last_choice = 5;
+  EXPECT_EQ(R.chooseRegion(q).region, 5);  // chosen before, 10 % worse: kept
+  q.regions[2].best_utility = 20;
+  EXPECT_EQ(R.chooseRegion(q).region, 6);  // twice as good: switch
+  q.regions[2].best_utility = 11;
+  q.regions[1] = state(5, {}, 0);          // the chosen region is done: no bonus left for it
+  EXPECT_EQ(R.chooseRegion(q).region, 6);
+}
+
 TEST(CoarseQuery, SerialisesTheDocumentedSchema) {
   CoarseQuery q = house("the sofa in the living room");
   q.history = {1, 3};
@@ -118,10 +139,10 @@ TEST(CoarseQuery, SerialisesTheDocumentedSchema) {
   q.regions[0].adjacent = {2, 4};
   q.room_adjacency.push_back({"hallway", "bedroom", 1.0});
   const nlohmann::json j = toJson(q);
-  for (const char* k : {"instruction", "targets", "room_constraint", "current_region", "visit_history", "regions",
-                        "room_adjacency_prior"})
+  for (const char* k : {"instruction", "targets", "room_constraint", "current_region", "last_choice", "visit_history",
+                        "regions", "room_adjacency_prior"})
     EXPECT_TRUE(j.contains(k)) << k;
-  EXPECT_EQ(j.size(), 7u);
+  EXPECT_EQ(j.size(), 8u);
   EXPECT_EQ(j["instruction"], "the sofa in the living room");
   EXPECT_EQ(j["targets"], nlohmann::json::array({"sofa"}));
   EXPECT_EQ(j["room_constraint"], "living room");

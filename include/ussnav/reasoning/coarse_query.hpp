@@ -29,12 +29,14 @@ struct RegionState {
                                     // is known-but-unseen space inside it)
   double cost_s = -1.0;             // to its cheapest target, s; -1 = no target
   double distance_m = -1.0;         // path length to it, m; -1 = no target
+  double best_utility = 0.0;        // max over its targets of gain / cost_s (builtin only; not sent to an LLM)
   int visits = 0;                   // times the UAV entered it
 };
 
 struct CoarseQuery {
   Instruction instruction;
   int current_region = -1;
+  int last_choice = -1;             // the region chosen at the previous decision, -1 none
   std::vector<int> history;         // regions entered, oldest first (last 20)
   std::vector<RegionState> regions; // ascending id; the candidates have frontiers > 0
   struct Adjacent {
