@@ -102,8 +102,8 @@ MapperFrameReport Mapper::process(const MapperFrame& f) {
     const int node = anchorNode(f.pose.position);
     const int region = node >= 0 ? regions_.regionOf(node) : -1;
     rep.objects = objects_->integrate(dets, *f.depth, node, region, f.time);
-    if (opt_.skeleton)
-      objects_->reanchor([this](const MappedObject& o) { return anchorObject(o); },
+    if (opt_.skeleton)  // the objects seen in this frame (the grid around them is fresh)
+      objects_->reanchor([&](const MappedObject& o) { return o.last_seen == f.time ? anchorObject(o) : -1; },
                          [this](int n) { return n >= 0 ? regions_.regionOf(n) : -1; });
     times_.add("objects", sw2.ms());
   }

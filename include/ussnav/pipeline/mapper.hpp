@@ -66,7 +66,8 @@ class Mapper {
   // The node an object belongs to: the node nearest to its box (within kObjectAnchorRadius)
   // whose centre sees the box in the grid, so a stove seen through the kitchen door joins the
   // kitchen's nodes, not the corridor the UAV looked from. -1 when the box is outside the
-  // grid window or no node sees it (the object keeps its node).
+  // grid window or no node sees it (the object keeps its node). process() re-anchors the
+  // objects observed in the frame.
   int anchorObject(const MappedObject& o) const;
   static constexpr double kObjectAnchorRadius = 3.0;
 
