@@ -321,7 +321,7 @@ struct EpisodeConfig {
   double blacklist_s = 20.0;          // an unreachable target is skipped for this long, s
   double transit_radius = 3.0;        // an object with no approach pose yet: fly to a graph node this near it, m
   double yaw_weight = 1.0;            // cost = max(path / speed, yaw_weight * yaw / yaw rate)
-  std::string tour = "search";        // full planner's order inside a region: search (gain-weighted arrival) | distance
+  std::string tour = "search";        // full: order of the region's targets after its best one: search | distance
   double clearance = 0.4;             // flight paths keep this from mapped obstacles, m
   bool fuse_depth = true;             // the depth camera feeds the grid too (LiDAR blind cone)
   bool end_on_collision = true;       // a collision ends the episode as a failure (DESIGN.md)
