@@ -129,10 +129,7 @@ class FullPlanner final : public ExplorationPlanner {
     }
     if (by_region.empty()) return c;
     std::vector<RegionCandidate> cands;
-    for (auto& [id, rc] : by_region) {
-      rc.utility = rc.gain / std::max(rc.cost_s, 0.1);
-      cands.push_back(rc);
-    }
+    for (const auto& [id, rc] : by_region) cands.push_back(rc);
     int region = -1;
     std::string why;
     if (coarse_) {

@@ -88,7 +88,6 @@ struct RegionCandidate {
   int targets = 0;
   double gain = 0.0;
   double cost_s = 0.0;       // cheapest target in it
-  double utility = 0.0;      // gain / cost
   double best_utility = 0.0; // max over its targets of gain / cost (the frontier planner's criterion)
   double frontier_gain = 0.0;  // part of `gain` from frontier targets (the rest: unseen patches)
 };
