@@ -118,9 +118,11 @@ void runMap(const MapArgs& a) {
                                               observed, cfg.sim.uav.radius, 200, a.seed);
     nlohmann::json sk = toJson(graphStats(mapper.graph()));
     sk["free_space_coverage"] = q.free_space_coverage;
+    sk["navigable_coverage"] = q.navigable_coverage;
     sk["path_success"] = q.path_success;
     sk["path_pairs"] = q.pairs;
     sk["observed_free_voxels"] = q.observed_free_voxels;
+    sk["navigable_voxels"] = q.navigable_voxels;
     sk["mean_path_ratio"] = q.mean_path_ratio;
     sk["path_not_found"] = q.not_found;
     sk["path_colliding"] = q.colliding;
@@ -187,8 +189,9 @@ void runMap(const MapArgs& a) {
               mapper.grid().memoryBytes() / 1e6, mapper.coverage().visitedCount(), mapper.coverage().exploredArea(),
               mapper.coverage().bytesPerExploredSquareMetre());
   if (a.skeleton)
-    std::printf("skeleton: %d nodes, free-space coverage %.3f, path success %.3f (%d pairs)\n",
+    std::printf("skeleton: %d nodes, free-space coverage %.3f (navigable %.3f), path success %.3f (%d pairs)\n",
                 stats["skeleton"]["nodes"].get<int>(), stats["skeleton"]["free_space_coverage"].get<double>(),
+                stats["skeleton"]["navigable_coverage"].get<double>(),
                 stats["skeleton"]["path_success"].get<double>(), stats["skeleton"]["path_pairs"].get<int>());
   if (a.skeleton)
     std::printf("regions: %d, purity %.3f, ARI %.3f (%d nodes in rooms)\n", stats["regions"]["count"].get<int>(),

@@ -60,13 +60,18 @@ SkeletonQuality skeletonQuality(const ConnectivityGraph& graph, const RollingGri
   const std::vector<Vec3> free = observed.freeCenters();
   q.observed_free_voxels = int(free.size());
   if (free.empty()) return q;
-  size_t covered = 0;
-  for (const auto& p : free) covered += graph.containingNode(p) >= 0;
-  q.free_space_coverage = double(covered) / double(free.size());
-
+  size_t covered = 0, safe_covered = 0;
   std::vector<Vec3> safe;
-  for (const auto& p : free)
-    if (!gt.sphereCollides(p, radius)) safe.push_back(p);
+  for (const auto& p : free) {
+    const bool in = graph.containingNode(p) >= 0;
+    covered += in;
+    if (gt.sphereCollides(p, radius)) continue;
+    safe.push_back(p);
+    safe_covered += in;
+  }
+  q.free_space_coverage = double(covered) / double(free.size());
+  q.navigable_voxels = int(safe.size());
+  q.navigable_coverage = safe.empty() ? 0.0 : double(safe_covered) / double(safe.size());
   if (safe.size() < 2) return q;
   Rng rng(seed);
   int ok = 0, tried = 0;

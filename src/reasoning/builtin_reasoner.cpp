@@ -16,6 +16,8 @@ constexpr double kUniformWeight = 0.5;  // mixed into a region's room distributi
 constexpr double kOtherRoom = 0.05;     // affinity factor of rooms that break a room constraint
 constexpr double kStay = 1.2;           // value factor of the region chosen last (else the current one)
 constexpr double kHallwayElongation = 3.0;
+// Share of a frontier's gain that lies in the next room rather than in more of the same one.
+constexpr double kBeyond = 0.5;
 
 std::string article(const std::string& w) {
   return (!w.empty() && std::string("aeiou").find(w[0]) != std::string::npos ? "an " : "a ") + w;
@@ -109,11 +111,36 @@ double BuiltinReasoner::targetChance(const CoarseQuery& q, const RegionState& r)
   double mean = 0.0;
   for (double& a : A) mean += (a /= amax) / double(R);
   int known = 0;
-  const auto P = roomDistribution(r.objects, &known);
-  const double conf = 1.0 - std::exp(-known / 2.0);
-  double s_label = 0.0;
-  for (size_t k = 0; k < R; ++k) s_label += P[k] * A[k];
-  return conf * s_label + (1.0 - conf) * mean;
+  auto P = roomDistribution(r.objects, &known);
+  double conf = 1.0 - std::exp(-known / 2.0);
+  // A region named from its shape alone (a hallway) has no object evidence: its label counts
+  // with the label's own confidence.
+  const int named = known == 0 && !r.label.empty() ? priors_->roomIndex(r.label) : -1;
+  if (named >= 0 && r.label_confidence > 0.0) {
+    std::fill(P.begin(), P.end(), 0.0);
+    P[size_t(named)] = 1.0;
+    conf = std::min(1.0, r.label_confidence);
+  }
+  double s_self = 0.0;
+  for (size_t k = 0; k < R; ++k) s_self += P[k] * A[k];
+  s_self = conf * s_self + (1.0 - conf) * mean;
+  if (kBeyond <= 0.0 || r.gain <= 0.0 || r.frontier_gain <= 0.0) return s_self;
+  // Frontiers look into unknown space: more of this room, or the room next door, whose type
+  // follows the adjacency prior from this region's type.
+  double s_next = 0.0;
+  for (size_t k = 0; k < R; ++k) {
+    if (P[k] <= 0.0) continue;
+    double norm = 0.0, s = 0.0;
+    for (size_t j = 0; j < R; ++j) {
+      const double w = priors_->adjacency(int(k), int(j));
+      norm += w;
+      s += w * A[j];
+    }
+    if (norm > 0.0) s_next += P[k] * s / norm;
+  }
+  s_next = conf * s_next + (1.0 - conf) * mean;
+  const double f = kBeyond * std::clamp(r.frontier_gain / r.gain, 0.0, 1.0);
+  return (1.0 - f) * s_self + f * s_next;
 }
 
 CoarseDecision BuiltinReasoner::chooseRegion(const CoarseQuery& q) {

@@ -97,6 +97,51 @@ const char* seedStatusName(SeedStatus s) {
   return "?";
 }
 
+Polyhedron refineHull(const OccupancyMap& map, Polyhedron poly, const Vec3& seed,
+                      const SkeletonConfig& cfg) {
+  int budget = cfg.refine_rays;
+  // Two rounds at most: the second looks at the faces the first one made.
+  for (int round = 0; round < 2 && budget > 0; ++round) {
+    std::vector<std::pair<double, int>> order;  // (-area, face): largest faces first
+    order.reserve(poly.faces.size());
+    for (int f = 0; f < int(poly.faces.size()); ++f) {
+      // A face whose corners are all free lies inside the sphere of free space already.
+      const auto& tri = poly.faces[size_t(f)];
+      bool contact = false;
+      for (int v : tri) contact = contact || isContact(poly.kinds[size_t(v)]);
+      if (contact) order.emplace_back(-poly.faceArea(f), f);
+    }
+    std::sort(order.begin(), order.end());
+    std::vector<Vec3> pts = poly.points;
+    std::vector<VertexKind> kinds = poly.kinds;
+    bool grew = false;
+    for (const auto& [neg_area, f] : order) {
+      if (budget <= 0) break;
+      const Vec3 c = poly.faceCentroid(f);
+      const Vec3 d = c - seed;
+      const double dist = d.norm();
+      // Only faces the seed sees from inside (the ray through the centroid leaves by this face).
+      if (dist < 1e-6 || poly.planeDistance(f, seed) >= -1e-9) continue;
+      --budget;
+      const Vec3 dir = d / dist;
+      const Vec3 end = seed + dir * cfg.max_radius;
+      const RayHit hit = castRayThroughGaps(map, seed, end, cfg.unknown_is_contact, cfg.max_unknown_gap);
+      const Vec3 p = hit.blocked ? hit.point : end;
+      if (poly.planeDistance(f, p) < cfg.refine_min_gain) continue;
+      pts.push_back(p);
+      kinds.push_back(!hit.blocked ? VertexKind::Free
+                      : hit.hit_state == VoxelState::Occupied ? VertexKind::Obstacle
+                                                              : VertexKind::Unknown);
+      grew = true;
+    }
+    if (!grew) break;
+    Polyhedron refined = buildPolyhedron(std::move(pts), std::move(kinds));
+    if (!refined.valid()) break;
+    poly = std::move(refined);
+  }
+  return poly;
+}
+
 Polyhedron expandNewPolyhedron(const OccupancyMap& map, const Vec3& seed,
                                const std::vector<Vec3>& directions, const SkeletonConfig& cfg) {
   std::vector<Vec3> pts;
@@ -115,6 +160,7 @@ Polyhedron expandNewPolyhedron(const OccupancyMap& map, const Vec3& seed,
     }
   }
   Polyhedron poly = buildPolyhedron(std::move(pts), std::move(kinds));
+  if (cfg.refine_rays > 0 && poly.valid()) poly = refineHull(map, std::move(poly), seed, cfg);
   if (cfg.carve_obstacles) poly = carveObstacles(map, std::move(poly), seed, cfg.max_carve_cuts);
   return poly;
 }

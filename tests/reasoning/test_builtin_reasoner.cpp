@@ -176,3 +176,34 @@ TEST(CoarseQuery, RepliesAreValidated) {
   EXPECT_EQ(parseCoarseReply(R"({"region": 4})", q).fault, "no_frontiers");
   EXPECT_EQ(parseCoarseReply(R"({"region": 2, "reason": "unclosed)", q).fault, "malformed");
 }
+
+TEST(BuiltinReasoner, LooksBeyondFrontiersByRoomAdjacency) {
+  // A hallway (named from its shape, no objects) and a kitchen, both with frontiers of equal
+  // utility and neither holding the target. Bedrooms open onto hallways, not onto kitchens.
+  BuiltinReasoner R(priors());
+  auto withFrontiers = [](RegionState r) {
+    r.frontier_gain = r.gain;
+    return r;
+  };
+  RegionState hall = withFrontiers(state(1, {}));
+  hall.label = "hallway";
+  hall.label_confidence = 0.3;
+  const RegionState kitchen = withFrontiers(state(2, {"fridge", "microwave"}));
+  CoarseQuery q;
+  q.instruction = interpretInstruction("bed", *priors());
+  q.regions = {hall, kitchen};
+  q.current_region = -1;  // between the two: no stay bonus
+  const double s_hall = R.targetChance(q, *q.find(1));
+  EXPECT_GT(s_hall, R.targetChance(q, *q.find(2)));
+  EXPECT_EQ(R.chooseRegion(q).region, 1) << R.chooseRegion(q).reason;
+  // The same hallway whose gain is all known-but-unseen space inside it: nothing beyond it to
+  // hope for, so its chance is its own (a hallway seldom holds a bed).
+  q.regions[0].frontier_gain = 0.0;
+  EXPECT_LT(R.targetChance(q, *q.find(1)), s_hall);
+  // For a stove the kitchen keeps its lead: its own chance dominates.
+  CoarseQuery k = q;
+  k.regions[0].frontier_gain = k.regions[0].gain;
+  k.instruction = interpretInstruction("stove", *priors());
+  EXPECT_GT(R.targetChance(k, *k.find(2)), R.targetChance(k, *k.find(1)));
+  EXPECT_EQ(R.chooseRegion(k).region, 2);
+}

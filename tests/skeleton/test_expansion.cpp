@@ -201,3 +201,41 @@ TEST(FindUnsafeVoxel, ToleratesAFewUnknownVoxels) {
   EXPECT_TRUE(findUnsafeVoxel(scene.grid, p, 0.25, true, nullptr, nullptr, 1));
   EXPECT_FALSE(findUnsafeVoxel(scene.grid, p, 0.25, true, nullptr, nullptr, 2));
 }
+
+TEST(ExpandNewPolyhedron, RefinementRaysFillTheCornerBetweenTwoWalls) {
+  // A seed 0.6 m from two walls of a room corner: the 50 rays cut the corner; refinement rays
+  // through the contact faces push the hull into it. The refined hull contains the base hull,
+  // covers more of the room's free voxels, and every vertex it adds is a ray end point in the
+  // room (free at max_radius, or on a wall, the floor or the ceiling).
+  const BoxRoomScene scene = boxRoomGrid(Vec3(4.0, 4.0, 2.6));
+  SkeletonConfig cfg;
+  const Vec3 seed(0.6, 0.6, 1.2);
+  const auto dirs = fibonacciSphere(cfg.sphere_samples);
+  const Polyhedron base = expandNewPolyhedron(scene.grid, seed, dirs, cfg);
+  cfg.refine_rays = 50;
+  const Polyhedron refined = expandNewPolyhedron(scene.grid, seed, dirs, cfg);
+  ASSERT_TRUE(base.valid());
+  ASSERT_TRUE(refined.valid());
+  ASSERT_GT(refined.points.size(), base.points.size());
+  EXPECT_LE(refined.points.size(), base.points.size() + 50);
+  for (int v : base.hullVertices()) EXPECT_TRUE(refined.contains(base.points[size_t(v)], 1e-6));
+  Aabb room = scene.room;
+  room.min -= Vec3::Constant(1e-9);
+  room.max += Vec3::Constant(1e-9);
+  for (size_t i = base.points.size(); i < refined.points.size(); ++i) {
+    const Vec3& q = refined.points[i];
+    EXPECT_TRUE(room.contains(q)) << q.transpose();
+    EXPECT_LE((q - seed).norm(), cfg.max_radius + 1e-9);
+    // A refinement point lies at least refine_min_gain outside the hull it refined.
+    EXPECT_FALSE(base.contains(q, cfg.refine_min_gain - 1e-6)) << q.transpose();
+  }
+  int in_base = 0, in_refined = 0;
+  for (double x = 0.05; x < 2.0; x += 0.1)
+    for (double y = 0.05; y < 2.0; y += 0.1)
+      for (double z = 0.75; z < 1.7; z += 0.1) {
+        in_base += base.contains(Vec3(x, y, z));
+        in_refined += refined.contains(Vec3(x, y, z));
+      }
+  EXPECT_GT(in_refined, in_base + in_base / 100);  // more of the corner (3188 -> 3232 samples)
+  EXPECT_GT(refined.volume, base.volume);
+}

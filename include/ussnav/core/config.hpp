@@ -151,6 +151,8 @@ struct SkeletonConfig {
   double gap_scan_radius = 4.0;     // candidates within this of the UAV, m
   double gap_min_center_distance = 0.6;  // gap seeds: no existing centre within this, m
   double gap_clearance = 0.5;       // gap seeds: no obstacle within this, m (>= robot_radius)
+  int refine_rays = 0;              // extra rays through hull faces that miss free space
+  double refine_min_gain = 0.1;     // a refinement ray counts when it reaches this past the face, m
   template <class V> void visit(V& v) {
     v.field("sphere_samples", sphere_samples, 8, 2000, "points");
     v.field("max_radius", max_radius, 0.2, 10.0, "m");
@@ -174,6 +176,8 @@ struct SkeletonConfig {
     v.field("gap_scan_radius", gap_scan_radius, 0.0, 50.0, "m");
     v.field("gap_min_center_distance", gap_min_center_distance, 0.0, 10.0, "m");
     v.field("gap_clearance", gap_clearance, 0.0, 5.0, "m");
+    v.field("refine_rays", refine_rays, 0, 2000, "rays");
+    v.field("refine_min_gain", refine_min_gain, 0.0, 5.0, "m");
   }
 };
 

@@ -34,13 +34,17 @@ class ObservedFreeSpace {
 };
 
 struct SkeletonQuality {
-  double free_space_coverage = 0.0;
+  double free_space_coverage = 0.0;  // observed free voxels inside some polyhedron
+  // The same over the observed free voxels the UAV's centre can occupy (no ground-truth obstacle
+  // within `radius`): the space a navigation graph must cover. Wall-side voxels are excluded.
+  double navigable_coverage = 0.0;
   double path_success = 0.0;
   int observed_free_voxels = 0;
+  int navigable_voxels = 0;
   int pairs = 0;
-  double mean_path_ratio = 0.0;
+  double mean_path_ratio = 0.0;  // graph path length / ground-truth shortest, over successes
   int not_found = 0;   // pairs the graph gave no path for
-  int colliding = 0;   // pairs whose graph path crosses occupied ground truth  // graph path length / ground-truth shortest, over successes
+  int colliding = 0;   // pairs whose graph path crosses occupied ground truth
 };
 
 // `pairs` random pairs (seeded) of observed free points that are safe for `radius` in the

@@ -5,12 +5,19 @@
 //    with a prior; no such object: "hallway" when the region is elongated (>= 3:1), else unknown;
 //  - the target's affinity A(room) = max over the instruction's targets of P(room | target),
 //    scaled to max 1; a room constraint multiplies other rooms by 0.05;
-//  - a region's chance s = conf * sum_k P(k | region) A(k) + (1 - conf) * mean_k A(k), and 1 when
-//    it already holds an object matching a target; 0.5 everywhere when no target has a prior;
-//  - the choice maximises (s + 0.02) * gain / max(cost, 1 s), the current region's value x 1.5
-//    (stay unless another region is clearly better). Valuing frontier gain (which looks beyond
-//    the region) at least at an unlabelled region's chance was tried and measured no better. Without any semantics every s
-//    is equal and this is the global-utility choice.
+//  - a region's own chance s_self = conf * sum_k P(k | region) A(k) + (1 - conf) * mean_k A(k)
+//    (a region named "hallway" from its shape alone counts as a hallway with the label's
+//    confidence), and 1 when it already holds an object matching a target; 0.5 everywhere when
+//    no target has a prior;
+//  - frontiers look into unknown space: half of their gain is taken to lie in the room next
+//    door, whose type follows the room-adjacency prior from the region's type: s_next = conf *
+//    sum_k P(k | region) sum_j adj(k, j) A(j) / sum_j adj(k, j) + (1 - conf) * mean; the chance
+//    is s = (1 - f) s_self + f s_next with f = 0.5 * frontier gain / gain (a hallway scores high
+//    for a bed, a kitchen does not);
+//  - the choice maximises (s + 0.02) * best_utility, the region's best target gain / cost (the
+//    frontier planner's own criterion), the region chosen last (else the current one) x 1.2
+//    while it has targets. Without any semantics every s is equal and this is the
+//    global-utility choice.
 
 #include <memory>
 

@@ -29,6 +29,16 @@ class ConnectivityGraph;
 Polyhedron expandNewPolyhedron(const OccupancyMap& map, const Vec3& seed,
                                const std::vector<Vec3>& directions, const SkeletonConfig& cfg);
 
+// Adaptive refinement (skeleton.refine_rays): the sphere's rays are ~0.5 rad apart, so where a hull
+// face spans contact vertices (a wall corner, the wedge beside a door jamb, the space behind a
+// chair leg) the free space between two rays is cut off. Up to cfg.refine_rays extra rays go from
+// the seed through the centroids of the faces with a contact corner, largest faces first, in at
+// most two rounds; an end point at least cfg.refine_min_gain outside its face joins the hull. The
+// hull only grows (a superset of the base hull), so obstacles it newly cuts are recorded on the
+// node like any other. Costs one ray cast per extra ray and one Qhull run per round.
+Polyhedron refineHull(const OccupancyMap& map, Polyhedron poly, const Vec3& seed,
+                      const SkeletonConfig& cfg);
+
 // A hull of ray end points can cut the corner of an obstacle that lies between two rays (a door
 // jamb, a table edge, a wall beside a door). A voxel counts as inside when its cube reaches more
 // than kTouchFraction voxels into the hull (ray end points touch the voxels that stopped them).
