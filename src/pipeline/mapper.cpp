@@ -82,9 +82,11 @@ MapperFrameReport Mapper::process(const MapperFrame& f) {
   if (opt_.skeleton && opt_.regions &&
       (graph_.size() != partitioned_nodes_ || graph_.edges().size() != partitioned_edges_)) {
     const Stopwatch sw;
-    const WeightedGraphView view = makeGraphView(
+    WeightedGraphView view = makeGraphView(
         graph_.nodes(), [](const ScgNode& n) { return std::pair<int, Vec3>(n.id, n.center); }, graph_.edges(),
         [](const ScgEdge& e) { return std::tuple<int, int, double>(e.a, e.b, e.weight); });
+    for (const ScgNode& n : graph_.nodes())  // satellites take the region of their neighbours
+      if (n.satellite) view.satellites.push_back(n.id);
     std::vector<int> added(graph_.size() - partitioned_nodes_);
     std::iota(added.begin(), added.end(), int(partitioned_nodes_));
     rep.regions = regions_.update(view, added);

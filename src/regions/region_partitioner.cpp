@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <limits>
+#include <numeric>
+#include <queue>
 #include <set>
 
 #include "ussnav/core/error.hpp"
@@ -60,6 +62,46 @@ std::set<int> touchedRegions(const IndexedGraph& g, const std::vector<int>& old_
 
 std::vector<int> sortedVector(const std::set<int>& s) { return {s.begin(), s.end()}; }
 
+// Region of each satellite: that of the partitioned node nearest along the edges (centroid
+// distances; ties by dense index). A satellite no edge path joins to a partitioned node takes
+// the region of the Euclidean-nearest one.
+std::vector<int> satelliteRegions(const IndexedGraph& g, const std::vector<char>& satellite,
+                                  std::vector<int> now) {
+  const int n = g.size();
+  std::vector<double> dist(n, std::numeric_limits<double>::infinity());
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
+  for (int i = 0; i < n; ++i)
+    if (!satellite[i]) {
+      dist[i] = 0.0;
+      open.emplace(0.0, i);
+    }
+  while (!open.empty()) {
+    const auto [d, i] = open.top();
+    open.pop();
+    if (d > dist[i]) continue;
+    for (int a = g.offsets[i]; a < g.offsets[i + 1]; ++a) {
+      const int j = g.nbrs[a];
+      const double dj = d + (g.centroids[i] - g.centroids[j]).norm();
+      if (dj < dist[j] || (dj == dist[j] && satellite[j] && now[i] < now[j])) {
+        dist[j] = dj;
+        now[j] = now[i];
+        open.emplace(dj, j);
+      }
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    if (!satellite[i] || now[i] >= 0) continue;
+    double best = std::numeric_limits<double>::infinity();
+    for (int j = 0; j < n; ++j)
+      if (!satellite[j] && (g.centroids[i] - g.centroids[j]).squaredNorm() < best) {
+        best = (g.centroids[i] - g.centroids[j]).squaredNorm();
+        now[i] = now[j];
+      }
+  }
+  return now;
+}
+
 }  // namespace
 
 RegionPartitioner::RegionPartitioner(const RegionsConfig& cfg) : cfg_(cfg) {
@@ -69,29 +111,19 @@ RegionPartitioner::RegionPartitioner(const RegionsConfig& cfg) : cfg_(cfg) {
 }
 
 int RegionPartitioner::regionOf(int node) const {
-  auto it = region_of_.find(node);
-  return it == region_of_.end() ? -1 : it->second;
+  if (auto it = region_of_.find(node); it != region_of_.end()) return it->second;
+  auto it = satellite_region_.find(node);
+  return it == satellite_region_.end() ? -1 : it->second;
 }
 
-RegionUpdate RegionPartitioner::update(const WeightedGraphView& view,
-                                       const std::vector<int>& new_node_ids) {
-  Stopwatch watch;
-  RegionUpdate report;
-  const IndexedGraph g = indexGraph(view, "region update graph");
+void RegionPartitioner::partition(const IndexedGraph& g, const std::vector<char>& listed,
+                                  RegionUpdate& report) {
   const int n = g.size();
-
-  std::vector<char> listed(n, 0);
-  for (size_t k = 0; k < new_node_ids.size(); ++k) {
-    const int i = g.indexOf(new_node_ids[k]);
-    if (i < 0)
-      throw InputError("region update", "new_node_ids[" + std::to_string(k) + "]",
-                       "node id " + std::to_string(new_node_ids[k]) + " is not in the graph");
-    listed[i] = 1;
-  }
   std::vector<int> old_region(n, -1);
   size_t known = 0;
   for (int i = 0; i < n; ++i) {
-    old_region[i] = regionOf(g.ids[i]);
+    const auto it = region_of_.find(g.ids[i]);
+    old_region[i] = it == region_of_.end() ? -1 : it->second;
     known += old_region[i] >= 0;
   }
   const bool any_new = known < static_cast<size_t>(n);
@@ -171,6 +203,60 @@ RegionUpdate RegionPartitioner::update(const WeightedGraphView& view,
       it = g.indexOf(it->first) < 0 ? region_of_.erase(it) : std::next(it);
   for (int i : keep) region_of_[g.ids[i]] = now[i];
 
+  prev_edges_.clear();
+  prev_edges_.reserve(g.edges.size());
+  for (const auto& e : g.edges) prev_edges_.push_back({g.ids[e.u], g.ids[e.v], e.w});
+}
+
+RegionUpdate RegionPartitioner::update(const WeightedGraphView& view,
+                                       const std::vector<int>& new_node_ids) {
+  Stopwatch watch;
+  RegionUpdate report;
+  const IndexedGraph g = indexGraph(view, "region update graph");
+  const int n = g.size();
+
+  std::vector<char> listed(n, 0);
+  for (size_t k = 0; k < new_node_ids.size(); ++k) {
+    const int i = g.indexOf(new_node_ids[k]);
+    if (i < 0)
+      throw InputError("region update", "new_node_ids[" + std::to_string(k) + "]",
+                       "node id " + std::to_string(new_node_ids[k]) + " is not in the graph");
+    listed[i] = 1;
+  }
+  std::vector<char> satellite(n, 0);
+  for (size_t k = 0; k < view.satellites.size(); ++k) {
+    const int i = g.indexOf(view.satellites[k]);
+    if (i < 0)
+      throw InputError("region update", "satellites[" + std::to_string(k) + "]",
+                       "node id " + std::to_string(view.satellites[k]) + " is not in the graph");
+    satellite[i] = 1;
+  }
+  std::vector<int> core;  // dense indices of the partitioned nodes
+  for (int i = 0; i < n; ++i)
+    if (!satellite[i]) core.push_back(i);
+  if (core.empty() && n > 0) {  // nothing to hang satellites on: partition them all
+    std::fill(satellite.begin(), satellite.end(), 0);
+    core.resize(n);
+    std::iota(core.begin(), core.end(), 0);
+  }
+
+  std::vector<int> now(n, -1);  // region id per dense index after this update
+  if (static_cast<int>(core.size()) == n) {
+    partition(g, listed, report);
+    satellite_region_.clear();
+    for (int i = 0; i < n; ++i) now[i] = region_of_.at(g.ids[i]);
+  } else {
+    const IndexedGraph cg = inducedSubgraph(g, core);
+    std::vector<char> core_listed(core.size());
+    for (size_t c = 0; c < core.size(); ++c) core_listed[c] = listed[core[c]];
+    partition(cg, core_listed, report);
+    for (int i : core) now[i] = region_of_.at(g.ids[i]);
+    now = satelliteRegions(g, satellite, std::move(now));
+    satellite_region_.clear();
+    for (int i = 0; i < n; ++i)
+      if (satellite[i]) satellite_region_[g.ids[i]] = now[i];
+  }
+
   // Rebuild the region table (O(N + E), flat arrays) and diff it against the previous one.
   std::vector<int> slot(next_id_, -1);
   std::vector<Region> table;
@@ -212,9 +298,6 @@ RegionUpdate RegionPartitioner::update(const WeightedGraphView& view,
     if (!fresh.count(id)) report.removed.push_back(id);
   regions_ = std::move(fresh);
 
-  prev_edges_.clear();
-  prev_edges_.reserve(g.edges.size());
-  for (const auto& e : g.edges) prev_edges_.push_back({g.ids[e.u], g.ids[e.v], e.w});
   report.ms = watch.ms();
   return report;
 }

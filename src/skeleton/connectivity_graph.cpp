@@ -103,7 +103,7 @@ std::vector<int> ConnectivityGraph::nodesWithin(const Vec3& p, double r) const {
   return out;
 }
 
-bool ConnectivityGraph::hasCenterWithin(const Vec3& p, double r) const {
+bool ConnectivityGraph::hasCenterWithin(const Vec3& p, double r, bool core_only) const {
   const Vec3i lo = cellOf(p - Vec3::Constant(r)), hi = cellOf(p + Vec3::Constant(r));
   for (int z = lo.z(); z <= hi.z(); ++z)
     for (int y = lo.y(); y <= hi.y(); ++y)
@@ -111,7 +111,9 @@ bool ConnectivityGraph::hasCenterWithin(const Vec3& p, double r) const {
         const auto it = cells_.find(cellKey(Vec3i(x, y, z)));
         if (it == cells_.end()) continue;
         for (int id : it->second)
-          if ((nodes_[size_t(id)].center - p).squaredNorm() <= r * r) return true;
+          if ((nodes_[size_t(id)].center - p).squaredNorm() <= r * r &&
+              !(core_only && nodes_[size_t(id)].satellite))
+            return true;
       }
   return false;
 }
@@ -135,10 +137,11 @@ int ConnectivityGraph::nearestNode(const Vec3& p) const {
   return best;
 }
 
-int ConnectivityGraph::containingNode(const Vec3& p) const {
+int ConnectivityGraph::containingNode(const Vec3& p, bool core_only) const {
   int best = -1;
   for (int id : nodesWithin(p, max_reach_)) {
     const ScgNode& n = nodes_[size_t(id)];
+    if (core_only && n.satellite) continue;
     if ((n.center - p).norm() <= n.reach + 1e-9 && n.polyhedron.contains(p) && (best < 0 || id < best))
       best = id;
   }
@@ -161,7 +164,8 @@ int ConnectivityGraph::addEdge(int a, int b, EdgeType type, double weight, std::
   return id;
 }
 
-std::unordered_map<int, double> ConnectivityGraph::graphDistances(int from, double limit) const {
+std::unordered_map<int, double> ConnectivityGraph::graphDistances(int from, double limit,
+                                                                  bool core_only) const {
   std::unordered_map<int, double> dist{{from, 0.0}};
   using Item = std::pair<double, int>;
   std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
@@ -173,6 +177,7 @@ std::unordered_map<int, double> ConnectivityGraph::graphDistances(int from, doub
     for (int e : nodes_[size_t(u)].edges) {
       const ScgEdge& ed = edges_[size_t(e)];
       const int v = ed.a == u ? ed.b : ed.a;
+      if (core_only && nodes_[size_t(v)].satellite) continue;
       const double nd = d + ed.length;
       if (nd > limit) continue;
       const auto it = dist.find(v);

@@ -43,11 +43,11 @@ GraphUpdateStats ConnectivityGraph::update(const OccupancyMap& map, const Vec3& 
 
   // Lines 1-3 of Algorithm 1: a polyhedron at the UAV when nothing covers it yet. Its parent is
   // the node the UAV was last inside, linked along the UAV's own way (it flew there).
-  const int inside = containingNode(uav_position);
+  const int inside = containingNode(uav_position, true);
   if (inside >= 0) {
     mount_ = inside;
     mount_point_ = uav_position;
-  } else if (!hasCenterWithin(uav_position, cfg_.min_center_distance) &&
+  } else if (!hasCenterWithin(uav_position, cfg_.min_center_distance, true) &&
              map.inWindow(map.keyOf(uav_position)) &&
              map.stateAt(uav_position) != VoxelState::Occupied) {
     std::vector<Vec3> hints;
@@ -67,7 +67,8 @@ GraphUpdateStats ConnectivityGraph::update(const OccupancyMap& map, const Vec3& 
   while (st.expansions < cfg_.max_expansions_per_frame && pops < max_pops) {
     if (queue_.empty()) {
       // Gap filling: only when the surfaces are done, so it never competes with them.
-      if (cfg_.gap_fill && fillOneGap(map, uav_position, time, st)) continue;
+      if (cfg_.gap_fill && fillOneGap(map, uav_position, time, st, false)) continue;
+      if (cfg_.satellite_fill && fillOneGap(map, uav_position, time, st, true)) continue;
       break;
     }
     BoundarySurface s = std::move(queue_.front());
@@ -90,7 +91,7 @@ GraphUpdateStats ConnectivityGraph::update(const OccupancyMap& map, const Vec3& 
 
 int ConnectivityGraph::addNode(const OccupancyMap& map, const Vec3& seed, int parent,
                                const std::vector<Vec3>& hints, bool require_parent_link,
-                               double time, GraphUpdateStats& stats, bool gap_seed) {
+                               double time, GraphUpdateStats& stats, bool gap_seed, bool satellite) {
   ++stats.expansions;
   const bool unknown_blocks = cfg_.unknown_is_contact;
   Polyhedron poly = expandNewPolyhedron(map, seed, directions_, cfg_);
@@ -108,8 +109,10 @@ int ConnectivityGraph::addNode(const OccupancyMap& map, const Vec3& seed, int pa
     center = c;
 
   // The centroid may have drifted next to an existing centre: the space is covered already.
-  if (require_parent_link &&
-      hasCenterWithin(center, gap_seed ? cfg_.gap_min_center_distance : cfg_.min_center_distance)) {
+  const double spacing = satellite  ? cfg_.satellite_min_center_distance
+                         : gap_seed ? cfg_.gap_min_center_distance
+                                    : cfg_.min_center_distance;
+  if (require_parent_link && hasCenterWithin(center, spacing, !satellite)) {
     ++stats.rejected_polyhedra;
     return -1;
   }
@@ -147,7 +150,8 @@ int ConnectivityGraph::addNode(const OccupancyMap& map, const Vec3& seed, int pa
   n.seed = seed;
   for (int v : poly.hullVertices()) n.reach = std::max(n.reach, (poly.points[size_t(v)] - center).norm());
   n.parent = linked ? parent : -1;
-  n.gap_seed = gap_seed;
+  n.gap_seed = gap_seed || satellite;
+  n.satellite = satellite;
   n.created_time = time;
   n.created_frame = frame_;
   if (!cfg_.carve_obstacles) {
@@ -172,6 +176,7 @@ int ConnectivityGraph::addNode(const OccupancyMap& map, const Vec3& seed, int pa
     ++stats.edges_added;
   }
   updateTopology(map, id, stats);
+  if (satellite) return id;  // satellites do not grow the graph
 
   for (BoundarySurface& s : findBoundarySurfaces(nodes_[size_t(id)].polyhedron, cfg_.max_cluster_faces,
                                                  cfg_.max_normal_divergence_deg)) {
@@ -231,9 +236,13 @@ void ConnectivityGraph::noteNewObstacles(const OccupancyMap& map, const std::vec
 }
 
 bool ConnectivityGraph::fillOneGap(const OccupancyMap& map, const Vec3& uav_position, double time,
-                                   GraphUpdateStats& stats) {
+                                   GraphUpdateStats& stats, bool satellite) {
   enum : uint8_t { kCovered = 1, kDone = 2 };
-  const double s = cfg_.gap_spacing, r = cfg_.gap_scan_radius;
+  const double s = satellite ? cfg_.satellite_spacing : cfg_.gap_spacing, r = cfg_.gap_scan_radius;
+  const double min_center_distance = satellite ? cfg_.satellite_min_center_distance : cfg_.gap_min_center_distance;
+  const double clearance = satellite ? cfg_.satellite_clearance : cfg_.gap_clearance;
+  const bool core_only = !satellite;  // core gap seeds do not see satellites
+  auto& settled = satellite ? satellite_settled_ : gap_settled_;
   const bool unknown_blocks = cfg_.unknown_is_contact;
   const int tolerated = int(std::floor(cfg_.max_unknown_gap / map.resolution() + 1e-9));
   auto latticeKey = [&](const Vec3i& k) { return cellKey(k); };
@@ -247,11 +256,11 @@ bool ConnectivityGraph::fillOneGap(const OccupancyMap& map, const Vec3& uav_posi
         const Vec3i k(x, y, z);
         const Vec3 p = (k.cast<double>() + Vec3::Constant(0.5)) * s;
         const double d = (p - uav_position).norm();
-        if (d > r || gap_settled_.count(latticeKey(k))) continue;
+        if (d > r || settled.count(latticeKey(k))) continue;
         const Vec3i vk = map.keyOf(p);
         if (!map.inWindow(vk) || map.state(vk) != VoxelState::Free) continue;
-        if (containingNode(p) >= 0) {
-          gap_settled_[latticeKey(k)] = kCovered;
+        if (containingNode(p, core_only) >= 0) {
+          settled[latticeKey(k)] = kCovered;
           continue;
         }
         cands.emplace_back(d, k);
@@ -262,26 +271,29 @@ bool ConnectivityGraph::fillOneGap(const OccupancyMap& map, const Vec3& uav_posi
   });
   for (const auto& [d, k] : cands) {
     const Vec3 p = (k.cast<double>() + Vec3::Constant(0.5)) * s;
-    if (hasCenterWithin(p, cfg_.gap_min_center_distance)) {
-      gap_settled_[latticeKey(k)] = kDone;
+    if (hasCenterWithin(p, min_center_distance, core_only)) {
+      settled[latticeKey(k)] = kDone;
       continue;
     }
     VoxelState bad = VoxelState::Free;
-    if (findUnsafeVoxel(map, p, std::max(cfg_.robot_radius, cfg_.gap_clearance), unknown_blocks, nullptr, &bad,
+    if (findUnsafeVoxel(map, p, std::max(cfg_.robot_radius, clearance), unknown_blocks, nullptr, &bad,
                         tolerated)) {
-      if (bad == VoxelState::Occupied) gap_settled_[latticeKey(k)] = kDone;
+      if (bad == VoxelState::Occupied) settled[latticeKey(k)] = kDone;
       continue;  // unknown nearby: it may clear later
     }
     int parent = -1;
-    for (int id : nodesWithin(p, cfg_.visibility_radius))
+    for (int id : nodesWithin(p, cfg_.visibility_radius)) {
+      if (core_only && nodes_[size_t(id)].satellite) continue;
       if (tubeOfSight(map, nodes_[size_t(id)].center, p, cfg_.edge_clearance, unknown_blocks)) {
         parent = id;
         break;
       }
+    }
     if (parent < 0) continue;  // no node in sight yet
-    gap_settled_[latticeKey(k)] = kDone;
+    settled[latticeKey(k)] = kDone;
     ++stats.gap_seeds;
-    addNode(map, p, parent, {p}, true, time, stats, true);
+    stats.satellite_seeds += satellite;
+    addNode(map, p, parent, {p}, true, time, stats, true, satellite);
     return true;
   }
   return false;
@@ -292,6 +304,7 @@ void ConnectivityGraph::updateTopology(const OccupancyMap& map, int id, GraphUpd
   const bool unknown_blocks = cfg_.unknown_is_contact;
   const Vec3 center = nodes_[size_t(id)].center;
   const double reach = nodes_[size_t(id)].reach;
+  const bool self_satellite = nodes_[size_t(id)].satellite;
   const std::vector<int> candidates = nodesWithin(center, std::max(cfg_.visibility_radius, reach + max_reach_));
   std::unordered_map<int, double> route;  // graph distances from id, computed when first needed
   bool route_ready = false;
@@ -309,10 +322,11 @@ void ConnectivityGraph::updateTopology(const OccupancyMap& map, int id, GraphUpd
       continue;
     }
     // Not in sight: a loop-closure edge along a short grid path, unless the graph already joins
-    // the two within loop_path_max (then the edge would add nothing but cost).
-    if (cfg_.loop_path_max <= 0.0) continue;
+    // the two within loop_path_max (then the edge would add nothing but cost). Core nodes only:
+    // satellites neither make loop edges nor shorten the routes that decide them.
+    if (cfg_.loop_path_max <= 0.0 || self_satellite || o.satellite) continue;
     if (!route_ready) {
-      route = graphDistances(id, cfg_.loop_path_max);
+      route = graphDistances(id, cfg_.loop_path_max, true);
       route_ready = true;
     }
     if (route.count(other)) continue;

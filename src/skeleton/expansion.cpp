@@ -267,8 +267,9 @@ SeedDecision runCandidate(const Vec3& from, const Vec3& dir, const OccupancyMap&
     return d;
   };
   // Graph checks first: a candidate in covered space is dropped whatever the map says.
-  if (graph.hasCenterWithin(d.position, cfg.min_center_distance)) return dropOrDefer(SeedStatus::TooClose);
-  if (graph.containingNode(d.position) >= 0) return dropOrDefer(SeedStatus::InsideExisting);
+  // Satellites (skeleton.satellite_fill) are invisible to the core graph's growth.
+  if (graph.hasCenterWithin(d.position, cfg.min_center_distance, true)) return dropOrDefer(SeedStatus::TooClose);
+  if (graph.containingNode(d.position, true) >= 0) return dropOrDefer(SeedStatus::InsideExisting);
   const Vec3i key = map.keyOf(d.position);
   if (!map.inWindow(key)) {
     d.status = SeedStatus::Deferred;

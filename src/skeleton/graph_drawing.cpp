@@ -52,23 +52,29 @@ void drawConnectivityGraph(Image& img, const TopDownView& view, const Connectivi
       if (outline.size() < 3) continue;
       const Rgb c = paletteColor(n.id);
       if (opt.fill_alpha > 0) img.fillPolygon(outline, c, opt.fill_alpha);
-      img.polygonOutline(outline, {160, 160, 160});
+      img.polygonOutline(outline, n.satellite ? Rgb{205, 205, 205} : Rgb{160, 160, 160});
     }
   if (opt.edges)
     for (size_t e = 0; e < g.edges().size(); ++e) {
       const ScgEdge& ed = g.edges()[e];
       if (!shown(ed.a) || !shown(ed.b)) continue;
+      // Edges of satellites: thin and grey, so the core graph stays readable.
+      const bool faint = g.node(ed.a).satellite || g.node(ed.b).satellite;
       const std::vector<Vec3> pts = g.edgePolyline(int(e));
       for (size_t i = 1; i < pts.size(); ++i) {
         const Vec2 a = view.toPx(pts[i - 1]), b = view.toPx(pts[i]);
-        img.line(a.x(), a.y(), b.x(), b.y(), edgeTypeColor(ed.type), opt.edge_thickness);
+        img.line(a.x(), a.y(), b.x(), b.y(), faint ? Rgb{175, 175, 175} : edgeTypeColor(ed.type),
+                 faint ? 1 : opt.edge_thickness);
       }
     }
   if (opt.centers)
     for (const ScgNode& n : g.nodes()) {
       if (!shown(n.id)) continue;
       const Vec2 p = view.toPx(n.center);
-      img.fillCircle(p.x(), p.y(), opt.node_radius_px, {20, 20, 20});
+      if (n.satellite)
+        img.fillCircle(p.x(), p.y(), 0.6 * opt.node_radius_px, {120, 120, 120});
+      else
+        img.fillCircle(p.x(), p.y(), opt.node_radius_px, {20, 20, 20});
     }
 }
 

@@ -37,6 +37,7 @@ GraphStats graphStats(const ConnectivityGraph& g) {
   for (const ScgNode& n : g.nodes()) {
     s.nodes_with_obstacles += !n.obstacles.empty() || n.obstacles_overflow;
     s.gap_nodes += n.gap_seed;
+    s.satellite_nodes += n.satellite;
   }
   s.queued_surfaces = int(g.queuedSurfaces());
   s.deferred_surfaces = int(g.deferredSurfaces());
@@ -58,7 +59,8 @@ nlohmann::json toJson(const GraphStats& s) {
           {"components", s.components},
           {"blocked_edges", s.blocked_edges},
           {"nodes_with_obstacles", s.nodes_with_obstacles},
-          {"gap_nodes", s.gap_nodes}};
+          {"gap_nodes", s.gap_nodes},
+          {"satellite_nodes", s.satellite_nodes}};
 }
 
 CoverageResult freeSpaceCoverage(const ConnectivityGraph& g, const OccupancyMap& map, double z_min,

@@ -323,3 +323,86 @@ TEST(RegionPartitioner, IncrementalMatchesFullQualityWithMoreStableIds) {
   EXPECT_LE(changes_inc, changes_full) << "of " << old_nodes;
   EXPECT_LT(changes_inc, old_nodes / 50);  // under 2% of old-node observations
 }
+
+namespace {
+
+// Two 5 x 5 rooms (x 0..4 and 6..10) joined by one door edge, plus two columns of small
+// polyhedra filling the doorway: ids 1000+y at x 4.8 (linked to room A's x=4 node of their row),
+// ids 1010+y at x 5.7 (linked to room B's x=6 node), each pair linked across, each column a chain.
+WeightedGraphView roomsWithAFilledDoorway() {
+  WeightedGraphView g = roomsInARow(2, 5, 1.0);
+  for (int y = 0; y < 5; ++y) {
+    g.node_ids.push_back(1000 + y);
+    g.centroids.emplace_back(4.8, y, 1.2);
+    g.node_ids.push_back(1010 + y);
+    g.centroids.emplace_back(5.7, y, 1.2);
+    g.edges.emplace_back(1000 + y, 5 * y + 4, 1.0);
+    g.edges.emplace_back(1010 + y, 100 + 5 * y, 1.0);
+    g.edges.emplace_back(1000 + y, 1010 + y, 1.0);
+    if (y > 0) {
+      g.edges.emplace_back(1000 + y, 999 + y, 1.0);
+      g.edges.emplace_back(1010 + y, 1009 + y, 1.0);
+    }
+  }
+  return g;
+}
+
+}  // namespace
+
+TEST(RegionPartitioner, SatellitesJoinTheNearestRegionWithoutMovingTheSplit) {
+  WeightedGraphView g = roomsWithAFilledDoorway();
+  // Partitioned like any node, the doorway nodes make the cut cross five edges (ten border
+  // nodes > 4): the rooms merge.
+  RegionPartitioner plain(paperConfig());
+  plain.update(g, g.node_ids);
+  EXPECT_EQ(plain.regions().size(), 1u);
+
+  for (int y = 0; y < 5; ++y) g.satellites.insert(g.satellites.end(), {1000 + y, 1010 + y});
+  RegionPartitioner p(paperConfig());
+  p.update(g, g.node_ids);
+  ASSERT_EQ(p.regions().size(), 2u);
+  const int a = p.regionOf(0), b = p.regionOf(100);
+  ASSERT_NE(a, b);
+  for (int y = 0; y < 5; ++y) {
+    EXPECT_EQ(p.regionOf(1000 + y), a) << y;  // 0.8 m from room A's node, 0.9 + 0.3 from B's
+    EXPECT_EQ(p.regionOf(1010 + y), b) << y;  // 0.3 m from room B's node
+  }
+  EXPECT_EQ(p.regions().at(a).nodes.size(), 30u);
+  EXPECT_EQ(p.regions().at(b).nodes.size(), 30u);
+  EXPECT_EQ(p.regions().at(a).adjacent, std::vector<int>{b});
+
+  // Satellites arriving later: the rooms keep their ids; only their node sets grow.
+  WeightedGraphView rooms = roomsInARow(2, 5, 1.0);
+  RegionPartitioner inc(paperConfig());
+  inc.update(rooms, rooms.node_ids);
+  const int ia = inc.regionOf(0), ib = inc.regionOf(100);
+  const RegionUpdate u = inc.update(g, g.satellites);
+  EXPECT_TRUE(u.created.empty());
+  EXPECT_EQ(u.changed, (std::vector<int>{std::min(ia, ib), std::max(ia, ib)}));
+  EXPECT_EQ(u.subgraph_nodes, 0);  // no partitioned node changed: Leiden did not run
+  EXPECT_EQ(inc.regionOf(1000), ia);
+  EXPECT_EQ(inc.regionOf(1014), ib);
+}
+
+TEST(RegionPartitioner, SatellitesWithoutAPathAndGraphsOfSatellitesOnly) {
+  WeightedGraphView g = roomsInARow(2, 5, 1.0);
+  g.node_ids.push_back(2000);  // no edge: takes the Euclidean-nearest region (room B's corner)
+  g.centroids.emplace_back(10.5, 4.0, 1.2);
+  g.satellites = {2000};
+  RegionPartitioner p(paperConfig());
+  p.update(g, g.node_ids);
+  EXPECT_EQ(p.regions().size(), 2u);
+  EXPECT_EQ(p.regionOf(2000), p.regionOf(124));
+
+  WeightedGraphView only = roomsInARow(1, 3, 1.0);
+  only.satellites = only.node_ids;  // nothing to hang them on: they are partitioned
+  RegionPartitioner q(paperConfig());
+  q.update(only, only.node_ids);
+  ASSERT_EQ(q.regions().size(), 1u);
+  EXPECT_EQ(q.regions().begin()->second.nodes.size(), 9u);
+
+  WeightedGraphView bad = roomsInARow(1, 3, 1.0);
+  bad.satellites = {77};
+  RegionPartitioner r(paperConfig());
+  EXPECT_THROW(r.update(bad, bad.node_ids), InputError);
+}

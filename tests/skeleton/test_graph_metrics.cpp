@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <array>
 #include <set>
 
 #include "support/skeleton_scenes.hpp"
@@ -102,18 +103,24 @@ TEST(GraphDrawing, DrawsPolyhedraCentresAndTypedEdges) {
   const TopDownView view = TopDownView::fit(scene.grid.bounds(), 50);
   Image img(view.width, view.height);
   drawConnectivityGraph(img, view, g);
+  int satellites = 0;
   for (const ScgNode& n : g.nodes()) {
     const Vec2 p = view.toPx(n.center);
-    EXPECT_EQ(img.at(int(std::lround(p.x())), int(std::lround(p.y()))), (Rgb{20, 20, 20}));
+    satellites += n.satellite;  // drawn smaller and grey
+    const Rgb expected = n.satellite ? Rgb{120, 120, 120} : Rgb{20, 20, 20};
+    EXPECT_EQ(img.at(int(std::lround(p.x())), int(std::lround(p.y()))), expected);
   }
+  EXPECT_GT(satellites, 0);
   std::set<Rgb> colours;
   for (int y = 0; y < img.height(); ++y)
     for (int x = 0; x < img.width(); ++x) colours.insert(img.at(x, y));
-  const GraphStats s = graphStats(g);
+  std::array<int, kEdgeTypeCount> core_edges{};  // edges of satellites are drawn grey
+  for (const ScgEdge& e : g.edges()) core_edges[size_t(e.type)] += !g.node(e.a).satellite && !g.node(e.b).satellite;
   for (int t = 0; t < kEdgeTypeCount; ++t)
-    if (s.edges_by_type[size_t(t)] > 0) {
+    if (core_edges[size_t(t)] > 0) {
       EXPECT_TRUE(colours.count(edgeTypeColor(EdgeType(t)))) << edgeTypeName(EdgeType(t));
     }
+  EXPECT_TRUE(colours.count(Rgb{175, 175, 175}));
   // A band filter that excludes every centre draws nothing.
   Image blank(view.width, view.height);
   GraphDrawOptions opt;

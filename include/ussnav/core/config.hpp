@@ -151,6 +151,10 @@ struct SkeletonConfig {
   double gap_scan_radius = 4.0;     // candidates within this of the UAV, m
   double gap_min_center_distance = 0.6;  // gap seeds: no existing centre within this, m
   double gap_clearance = 0.5;       // gap seeds: no obstacle within this, m (>= robot_radius)
+  bool satellite_fill = true;       // then fill what is left with satellite polyhedra (below)
+  double satellite_spacing = 0.3;   // lattice of satellite-seed candidates, m
+  double satellite_min_center_distance = 0.4;  // satellites: no existing centre within this, m
+  double satellite_clearance = 0.25;  // satellites: no obstacle within this, m (>= robot_radius)
   int refine_rays = 0;              // extra rays through hull faces that miss free space
   double refine_min_gain = 0.1;     // a refinement ray counts when it reaches this past the face, m
   template <class V> void visit(V& v) {
@@ -176,6 +180,10 @@ struct SkeletonConfig {
     v.field("gap_scan_radius", gap_scan_radius, 0.0, 50.0, "m");
     v.field("gap_min_center_distance", gap_min_center_distance, 0.0, 10.0, "m");
     v.field("gap_clearance", gap_clearance, 0.0, 5.0, "m");
+    v.field("satellite_fill", satellite_fill);
+    v.field("satellite_spacing", satellite_spacing, 0.1, 5.0, "m");
+    v.field("satellite_min_center_distance", satellite_min_center_distance, 0.0, 10.0, "m");
+    v.field("satellite_clearance", satellite_clearance, 0.0, 5.0, "m");
     v.field("refine_rays", refine_rays, 0, 2000, "rays");
     v.field("refine_min_gain", refine_min_gain, 0.0, 5.0, "m");
   }

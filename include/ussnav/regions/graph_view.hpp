@@ -18,6 +18,9 @@ struct WeightedGraphView {
   std::vector<int> node_ids;                          // unique, stable over time
   std::vector<Vec3> centroids;                        // one per node id, same order
   std::vector<std::tuple<int, int, double>> edges;    // (id, id, weight >= 0), undirected
+  // Satellite nodes (optional, a subset of node_ids): they do not enter community detection
+  // and take the region of the nearest other node along the edges (see RegionPartitioner).
+  std::vector<int> satellites;
 };
 
 // Builds a view from any graph: `node_fn(n)` returns pair<int, Vec3> (id, centroid) and

@@ -4,6 +4,10 @@
 // neighbours, consolidates, and matches communities to old regions by node overlap (optimal
 // assignment) so ids stay stable and are never reused. Cost: O(N + E) bookkeeping plus Leiden
 // on the local subgraph. igraph's RNG is process-global: one update at a time per process.
+// Satellite nodes of the view (e.g. the SCG's small gap-filling polyhedra) stay out of Leiden:
+// the partition is made on the other nodes alone, then each satellite joins the region of the
+// partitioned node nearest to it along the edges (multi-source Dijkstra, centroid distances),
+// so a denser graph covers more space without changing where the rooms split. O(E log N).
 
 #include <map>
 #include <unordered_map>
@@ -41,7 +45,8 @@ class RegionPartitioner {
   // Nodes of `g` that have no region yet count as new even when not listed; a listed node
   // that already has a region keeps it, but its region is re-partitioned. Nodes missing from
   // `g` leave their regions, and regions whose edges changed are re-partitioned as well.
-  // Throws InputError on a malformed graph or a listed id that is not in `g`.
+  // Throws InputError on a malformed graph, or a listed or satellite id that is not in `g`.
+  // When every node is a satellite, all of them are partitioned.
   RegionUpdate update(const WeightedGraphView& g, const std::vector<int>& new_node_ids);
 
   // Region id of a node, -1 if the node is unknown.
@@ -51,9 +56,14 @@ class RegionPartitioner {
 
  private:
   RegionsConfig cfg_;
-  std::unordered_map<int, int> region_of_;      // node id -> region id
+  // Leiden, consolidation and id matching on the partitioned (non-satellite) nodes; fills
+  // region_of_ for them. `listed` flags new nodes of `g`.
+  void partition(const IndexedGraph& g, const std::vector<char>& listed, RegionUpdate& report);
+
+  std::unordered_map<int, int> region_of_;      // partitioned node id -> region id
+  std::unordered_map<int, int> satellite_region_;  // satellite node id -> region id
   std::map<int, Region> regions_;
-  std::vector<IndexedEdge> prev_edges_;         // last graph's edges, by node id (u < v)
+  std::vector<IndexedEdge> prev_edges_;         // last partitioned graph's edges, by id (u < v)
   int next_id_ = 0;
 };
 

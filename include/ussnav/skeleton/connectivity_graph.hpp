@@ -8,6 +8,11 @@
 // at the nearest point of a gap_spacing lattice around the UAV that is observed free, outside
 // every polyhedron, robot_radius clear and in sight of a node (linked to it by a Visible edge):
 // space the Boundary Surfaces never pointed at (behind furniture, beside a narrow door).
+// Then, with skeleton.satellite_fill, a finer lattice seeds *satellites*: polyhedra for coverage
+// and path search that the core graph never sees while it grows (seed checks, centre distances,
+// gap filling, the UAV's mount and loop-edge routes ignore them), that queue no Boundary
+// Surfaces, and that the region stage leaves out of Leiden. So the core graph is the same with
+// or without them (edges to satellites aside).
 // Nodes and edges are never removed or moved and outlive the map window. Deterministic.
 // Cost: ~0.2-0.5 ms per expansion; a frame with nothing new costs microseconds.
 //
@@ -53,6 +58,7 @@ struct ScgNode {
   double reach = 0.0;            // max distance from center to a hull vertex
   int parent = -1;               // node this one was expanded from (-1: root or UAV seed w/o link)
   bool gap_seed = false;         // seeded by gap filling (parent: the node that saw the seed)
+  bool satellite = false;        // a satellite (gap_seed too): see the file comment
   double created_time = 0.0;
   int64_t created_frame = 0;
   std::vector<int> edges;        // indices into ConnectivityGraph::edges()
@@ -76,6 +82,7 @@ struct GraphUpdateStats {
   int rejected_polyhedra = 0;// expansions dropped: degenerate hull, centre too close, no link
   bool seeded_at_uav = false;
   int gap_seeds = 0;         // expansions at gap seeds (observed free space nothing covered)
+  int satellite_seeds = 0;   // of which satellite seeds
   int recarved = 0;          // polyhedra that took in a newly observed obstacle (recorded or cut)
   int blocked_edges = 0;     // edges found crossing newly observed obstacles
   double ms = 0.0;
@@ -110,11 +117,12 @@ class ConnectivityGraph {
   std::vector<int> nodesCreatedSince(double t) const;
   // Nodes whose centre is within r of p, nearest first (ties: lower id).
   std::vector<int> nodesWithin(const Vec3& p, double r) const;
-  bool hasCenterWithin(const Vec3& p, double r) const;
+  // core_only: satellites do not count.
+  bool hasCenterWithin(const Vec3& p, double r, bool core_only = false) const;
   // Nearest node centre to p, or -1 when the graph is empty.
   int nearestNode(const Vec3& p) const;
-  // Lowest-id node whose polyhedron contains p, or -1.
-  int containingNode(const Vec3& p) const;
+  // Lowest-id node whose polyhedron contains p, or -1 (core_only: the lowest-id core node).
+  int containingNode(const Vec3& p, bool core_only = false) const;
   // Boundary surfaces waiting in the expansion queue / parked until unknown space is observed.
   size_t queuedSurfaces() const { return queue_.size(); }
   size_t deferredSurfaces() const { return deferred_.size(); }
@@ -127,17 +135,21 @@ class ConnectivityGraph {
   // Expands at `seed`, links to `parent` through `hints` (extra waypoints allowed for the
   // kinematic edge), runs UpdateTopology and queues the new Boundary Surfaces. -1 if rejected.
   int addNode(const OccupancyMap& map, const Vec3& seed, int parent, const std::vector<Vec3>& hints,
-              bool require_parent_link, double time, GraphUpdateStats& stats, bool gap_seed = false);
+              bool require_parent_link, double time, GraphUpdateStats& stats, bool gap_seed = false,
+              bool satellite = false);
   // Newly observed obstacle voxels: recorded in (or, with carve_obstacles, cut out of) the
   // polyhedra they reach into; edges across them blocked (see update()).
   void noteNewObstacles(const OccupancyMap& map, const std::vector<Vec3i>& new_occupied,
                          GraphUpdateStats& stats);
-  // One gap seed expanded (true), or no lattice point needs one now (false).
-  bool fillOneGap(const OccupancyMap& map, const Vec3& uav_position, double time, GraphUpdateStats& stats);
+  // One gap seed (a satellite seed with `satellite`) expanded (true), or no lattice point needs
+  // one now (false).
+  bool fillOneGap(const OccupancyMap& map, const Vec3& uav_position, double time, GraphUpdateStats& stats,
+                  bool satellite);
   void updateTopology(const OccupancyMap& map, int id, GraphUpdateStats& stats);
   int addEdge(int a, int b, EdgeType type, double weight, std::vector<Vec3> via);
-  // Shortest graph distance from `from` to every node within `limit` (others: infinity).
-  std::unordered_map<int, double> graphDistances(int from, double limit) const;
+  // Shortest graph distance from `from` to every node within `limit` (others: infinity);
+  // core_only: through core nodes alone.
+  std::unordered_map<int, double> graphDistances(int from, double limit, bool core_only = false) const;
   void indexNode(int id);
   int64_t cellKey(const Vec3i& c) const;
   Vec3i cellOf(const Vec3& p) const;
@@ -156,6 +168,7 @@ class ConnectivityGraph {
   // Gap-fill lattice points settled for good: covered by a polyhedron, expanded, too close to a
   // centre or next to an obstacle. Others are re-checked at each scan.
   std::unordered_map<int64_t, uint8_t> gap_settled_;
+  std::unordered_map<int64_t, uint8_t> satellite_settled_;  // the same for the satellite lattice
   int mount_ = -1;                 // last node that contained the UAV
   Vec3 mount_point_ = Vec3::Zero();// UAV position when it was last inside mount_
 };

@@ -22,12 +22,13 @@ struct GraphStats {
   int components = 0;  // connected components (0 for an empty graph)
   int blocked_edges = 0;       // edges an obstacle observed later lies on
   int nodes_with_obstacles = 0;// hulls known to hold an occupied voxel (a corner they cut)
-  int gap_nodes = 0;           // nodes seeded by gap filling
+  int gap_nodes = 0;           // nodes seeded by gap filling (satellites included)
+  int satellite_nodes = 0;     // satellites (skeleton.satellite_fill)
 };
 GraphStats graphStats(const ConnectivityGraph& g);
 // {"nodes", "edges", "edges_by_type": {"kinematic", "overlap", "visible", "loop"},
 //  "queued_surfaces", "deferred_surfaces", "mean_degree", "components", "blocked_edges",
-//  "nodes_with_obstacles", "gap_nodes"}
+//  "nodes_with_obstacles", "gap_nodes", "satellite_nodes"}
 nlohmann::json toJson(const GraphStats& s);
 
 // Connected component id of every node (ids ascending from 0 in order of the lowest node id).
