@@ -382,6 +382,18 @@ TEST(RegionPartitioner, SatellitesJoinTheNearestRegionWithoutMovingTheSplit) {
   EXPECT_EQ(u.subgraph_nodes, 0);  // no partitioned node changed: Leiden did not run
   EXPECT_EQ(inc.regionOf(1000), ia);
   EXPECT_EQ(inc.regionOf(1014), ib);
+
+  // A partitioned node leaves the graph: without room A's node 4, the nearest partitioned node
+  // of satellite 1000 is room B's node 100 (0.9 + 0.3 m).
+  WeightedGraphView cut = g;
+  const auto at = std::find(cut.node_ids.begin(), cut.node_ids.end(), 4) - cut.node_ids.begin();
+  cut.node_ids.erase(cut.node_ids.begin() + at);
+  cut.centroids.erase(cut.centroids.begin() + at);
+  std::erase_if(cut.edges, [](const auto& e) { return std::get<0>(e) == 4 || std::get<1>(e) == 4; });
+  inc.update(cut, {});
+  EXPECT_EQ(inc.regionOf(4), -1);
+  EXPECT_EQ(inc.regionOf(1000), ib);
+  EXPECT_EQ(inc.regionOf(1001), ia);  // node 9, 0.8 m away, is still there
 }
 
 TEST(RegionPartitioner, SatellitesWithoutAPathAndGraphsOfSatellitesOnly) {
