@@ -13,12 +13,14 @@
 #include "ussnav/episode/flight_path.hpp"
 #include "ussnav/episode/goal.hpp"
 #include "ussnav/eval/metrics.hpp"
+#include "ussnav/eval/region_oracle.hpp"
 #include "ussnav/exploration/camera_coverage.hpp"
 #include "ussnav/exploration/frontier.hpp"
 #include "ussnav/exploration/graph_costs.hpp"
 #include "ussnav/mapping/inflated_map.hpp"
 #include "ussnav/perception/oracle_detector.hpp"
 #include "ussnav/pipeline/mapper.hpp"
+#include "ussnav/reasoning/builtin_reasoner.hpp"
 #include "ussnav/reasoning/coarse_decider.hpp"
 #include "ussnav/reasoning/instruction.hpp"
 #include "ussnav/reasoning/region_labeler.hpp"
@@ -127,20 +129,6 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
   if (instruction.targets.empty())
     throw InputError("goal", "", "'" + spec.goal + "' names a room but no object; ussnav goto flies to rooms");
   const int goal_room = instruction.room.empty() ? -1 : priors->roomIndex(instruction.room);
-  std::shared_ptr<Reasoner> reasoner;
-  std::unique_ptr<RegionLabeler> labeler;
-  std::unique_ptr<CoarseDecider> decider;
-  RegionChooser coarse = spec.coarse;
-  if ((spec.planner == "full" && !coarse) || goal_room >= 0) {
-    reasoner = makeReasoner(cfg.reasoning, priors);
-    labeler = std::make_unique<RegionLabeler>(reasoner, cfg.reasoning.label_min_interval_s, cfg.reasoning.label_queue,
-                                              reasoner->name() != "builtin");
-    if (spec.planner == "full" && !coarse) {
-      decider = std::make_unique<CoarseDecider>(reasoner, priors, instruction, cfg.reasoning);
-      coarse = decider->chooser();
-    }
-  }
-  std::unique_ptr<ExplorationPlanner> planner = makePlanner(spec.planner, coarse);
   Simulator sim(spec.world, cfg, spec.seed);
   const Pose start = spec.start ? *spec.start : sim.startPose();
   const GoalMatcher goal(spec.goal, instruction.targets, encoder, ep.goal_similarity);
@@ -150,6 +138,28 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
   R.goal_instances = int(truth.instances.size());
   R.shortest_path_m = truth.shortest_path;
   R.multi_room = truth.multi_room;
+
+  std::shared_ptr<Reasoner> reasoner;
+  std::shared_ptr<OracleReasoner> oracle;  // evaluation only: an upper bound that reads ground truth
+  std::unique_ptr<RegionLabeler> labeler;
+  std::unique_ptr<CoarseDecider> decider;
+  RegionChooser coarse = spec.coarse;
+  if ((spec.planner == "full" && !coarse) || goal_room >= 0) {
+    if (cfg.reasoning.reasoner == "oracle") {
+      oracle = std::make_shared<OracleReasoner>(sim.world(), roomsOf(sim.world(), truth.instances),
+                                                std::make_shared<BuiltinReasoner>(priors));
+      reasoner = oracle;
+    } else {
+      reasoner = makeReasoner(cfg.reasoning, priors);
+    }
+    labeler = std::make_unique<RegionLabeler>(reasoner, cfg.reasoning.label_min_interval_s, cfg.reasoning.label_queue,
+                                              reasoner->name() == "llm");
+    if (spec.planner == "full" && !coarse) {
+      decider = std::make_unique<CoarseDecider>(reasoner, priors, instruction, cfg.reasoning);
+      coarse = decider->chooser();
+    }
+  }
+  std::unique_ptr<ExplorationPlanner> planner = makePlanner(spec.planner, coarse);
 
   auto detector = std::make_unique<OracleDetector>(sim.instanceLabels(), OracleRealism::fromConfig(cfg.perception), spec.seed);
   MapperOptions mopt;
@@ -237,6 +247,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
     snapshot = buildSceneGraph(mapper, t);
     summaries = summarizeRegions(snapshot);
     labeler->offer(summaries, t);
+    if (oracle) oracle->setScene(summaries);
     if (decider) decider->setScene(summaries, labeler->semantics());
     times.add("semantics", sw.ms());
   };

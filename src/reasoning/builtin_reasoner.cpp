@@ -139,11 +139,20 @@ double BuiltinReasoner::targetChance(const CoarseQuery& q, const RegionState& r)
     if (norm > 0.0) s_next += P[k] * s / norm;
   }
   s_next = conf * s_next + (1.0 - conf) * mean;
+  return blendChance(r, s_self, s_next);
+}
+
+double blendChance(const RegionState& r, double s_self, double s_next) {
+  if (kBeyond <= 0.0 || r.gain <= 0.0 || r.frontier_gain <= 0.0) return s_self;
   const double f = kBeyond * std::clamp(r.frontier_gain / r.gain, 0.0, 1.0);
   return (1.0 - f) * s_self + f * s_next;
 }
 
 CoarseDecision BuiltinReasoner::chooseRegion(const CoarseQuery& q) {
+  return chooseByChance(q, [&](const RegionState& r) { return targetChance(q, r); });
+}
+
+CoarseDecision chooseByChance(const CoarseQuery& q, const std::function<double(const RegionState&)>& chance) {
   const Stopwatch sw;
   CoarseDecision d;
   double best = -1.0;
@@ -155,7 +164,7 @@ CoarseDecision BuiltinReasoner::chooseRegion(const CoarseQuery& q) {
   const int stay = last && last->frontiers > 0 && last->cost_s >= 0.0 ? q.last_choice : q.current_region;
   for (const RegionState& r : q.regions) {
     if (r.frontiers <= 0 || r.cost_s < 0.0) continue;
-    const double s = targetChance(q, r);
+    const double s = chance(r);
     double v = (s + 0.02) * r.best_utility;
     if (r.id == stay) v *= kStay;
     if (v > best) best = v, d.region = r.id, best_s = s;

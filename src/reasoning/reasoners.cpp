@@ -100,6 +100,10 @@ std::filesystem::path promptsDir(const ReasoningConfig& cfg) {
 std::shared_ptr<Reasoner> makeReasoner(const ReasoningConfig& cfg, std::shared_ptr<const CommonsensePriors> priors) {
   if (cfg.reasoner == "builtin") return std::make_shared<BuiltinReasoner>(std::move(priors));
   if (cfg.reasoner == "llm") return std::make_shared<LlmReasoner>(cfg, std::move(priors));
+  if (cfg.reasoner == "oracle")
+    throw InputError("config", "reasoning.reasoner",
+                     "'oracle' reads the simulator's ground truth: only ussnav explore and eval can use it "
+                     "(expected builtin or llm here)");
   throw InputError("config", "reasoning.reasoner", "unknown reasoner '" + cfg.reasoner + "' (expected builtin or llm)");
 }
 

@@ -68,3 +68,13 @@ TEST(ReasoningEpisode, MisleadingGroundTruthRoomLabelsChangeNothing) {
   EXPECT_EQ(a.reasoning["decisions"], b.reasoning["decisions"]);
   EXPECT_EQ(a.success, b.success);
 }
+
+TEST(ReasoningEpisode, OracleReasonerDrivesTheFullPlannerInAnEpisode) {
+  Config cfg = testConfig();
+  cfg.reasoning.reasoner = "oracle";  // evaluation only: reads where the bed is
+  const EpisodeResult r = runEpisode(spec("bed", "kitchen", "bedroom"), cfg).result;
+  EXPECT_TRUE(r.success) << r.end_reason;
+  EXPECT_EQ(r.reasoning["reasoner"], "oracle");
+  EXPECT_GT(r.reasoning["decisions"].get<int>(), 0);
+  EXPECT_EQ(r.reasoner_fallbacks, 0);
+}

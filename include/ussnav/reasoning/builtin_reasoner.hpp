@@ -19,6 +19,7 @@
 //    while it has targets. Without any semantics every s is equal and this is the
 //    global-utility choice.
 
+#include <functional>
 #include <memory>
 
 #include "ussnav/reasoning/reasoner.hpp"
@@ -40,5 +41,12 @@ class BuiltinReasoner : public Reasoner {
  private:
   std::shared_ptr<const CommonsensePriors> priors_;
 };
+
+// The decision rule above with any chance function s(region): max (s + 0.02) * best_utility,
+// the committed region x 1.2; fault "no_frontiers" when no region has a reachable target.
+// Shared with the evaluation's oracle (eval/region_oracle.hpp), so the two differ only in s.
+CoarseDecision chooseByChance(const CoarseQuery& q, const std::function<double(const RegionState&)>& chance);
+// s = (1 - f) s_self + f s_next with f = 0.5 * frontier gain / gain (s_self without frontiers).
+double blendChance(const RegionState& r, double s_self, double s_next);
 
 }  // namespace ussnav

@@ -1,0 +1,56 @@
+// The oracle reasoner (see region_oracle.hpp).
+
+#include "ussnav/eval/region_oracle.hpp"
+
+#include "ussnav/reasoning/builtin_reasoner.hpp"
+
+namespace ussnav {
+
+OracleReasoner::OracleReasoner(const World& world, std::set<int> goal_rooms, std::shared_ptr<Reasoner> labels)
+    : world_(world), goal_rooms_(std::move(goal_rooms)), labels_(std::move(labels)) {
+  for (const Door& d : world_.doors) {
+    if (goal_rooms_.count(d.room_a) && d.room_b >= 0) next_to_goal_.insert(d.room_b);
+    if (goal_rooms_.count(d.room_b) && d.room_a >= 0) next_to_goal_.insert(d.room_a);
+  }
+}
+
+void OracleReasoner::setScene(const std::vector<RegionSummary>& regions) {
+  std::map<int, int> rooms;
+  for (const RegionSummary& r : regions) {
+    const Room* room = world_.roomAt(r.centroid.head<2>());
+    rooms[r.id] = room ? room->id : -1;
+  }
+  const std::lock_guard<std::mutex> lock(mutex_);
+  room_of_region_ = std::move(rooms);
+}
+
+double OracleReasoner::chance(const RegionState& r) const {
+  int room = -1;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    const auto it = room_of_region_.find(r.id);
+    if (it != room_of_region_.end()) room = it->second;
+  }
+  if (room < 0) return 0.5;
+  const double self = goal_rooms_.count(room) ? 1.0 : kMiss;
+  const double next = next_to_goal_.count(room) ? 1.0 : kMiss;
+  return blendChance(r, self, next);
+}
+
+CoarseDecision OracleReasoner::chooseRegion(const CoarseQuery& q) {
+  return chooseByChance(q, [&](const RegionState& r) { return chance(r); });
+}
+
+std::set<int> roomsOf(const World& world, const std::vector<const Object*>& objects) {
+  std::set<int> out;
+  for (const Object* o : objects) {
+    if (o->room_id >= 0) {
+      out.insert(o->room_id);
+    } else if (const Room* room = world.roomAt(o->box.center.head<2>())) {
+      out.insert(room->id);
+    }
+  }
+  return out;
+}
+
+}  // namespace ussnav
