@@ -61,6 +61,9 @@ GroundTruthGrid::GroundTruthGrid(const World& world, double resolution, double m
     }
   }
   for (const auto& w : world.walls) rasterizeWall(w);
+  // A wall's end caps reach half its thickness past its ends (corners close); where a wall ends
+  // at another wall's door, the cap would narrow the door: openings are cut through every wall.
+  for (const auto& w : world.walls) carveOpenings(w);
   for (size_t i = 0; i < world.objects.size(); ++i) rasterizeBox(world.objects[i].box, uint16_t(i + 1));
   const auto& ob = world.obstacles;
   for (const auto& c : ob.cells) {
@@ -145,6 +148,37 @@ void GroundTruthGrid::rasterizeWall(const Wall& w) {
         if (!open && inWindow(k)) labels_[index(k)] = kStructure;
       }
     }
+}
+
+void GroundTruthGrid::carveOpenings(const Wall& w) {
+  const Vec2 d = w.b - w.a;
+  const double len = d.norm();
+  if (len < 1e-9 || w.openings.empty()) return;
+  const Vec2 u = d / len;
+  const Vec2 n(-u.y(), u.x());
+  const double half_t = std::max(0.5 * w.thickness, 0.5 * res_ + 1e-6);
+  for (const Opening& o : w.openings) {
+    Aabb box;
+    for (double s : {o.start, o.end})
+      for (double t : {-half_t, half_t}) {
+        const Vec2 p = w.a + u * s + n * t;
+        box.extend(Vec3(p.x(), p.y(), w.z0 + o.bottom));
+        box.extend(Vec3(p.x(), p.y(), w.z0 + o.top));
+      }
+    const Vec3i k0 = keyOf(box.min), k1 = keyOf(box.max);
+    for (int y = k0.y(); y <= k1.y(); ++y)
+      for (int x = k0.x(); x <= k1.x(); ++x) {
+        const Vec2 c((x + 0.5) * res_, (y + 0.5) * res_);
+        const double s = (c - w.a).dot(u), t = (c - w.a).dot(n);
+        if (std::abs(t) > half_t || s < o.start || s > o.end) continue;
+        for (int z = k0.z(); z <= k1.z(); ++z) {
+          const double zc = (z + 0.5) * res_;
+          const Vec3i k(x, y, z);
+          if (zc < w.z0 || zc > w.z1 || zc - w.z0 < o.bottom || zc - w.z0 > o.top || !inWindow(k)) continue;
+          if (labels_[index(k)] == kStructure) labels_[index(k)] = kFree;
+        }
+      }
+  }
 }
 
 void GroundTruthGrid::rasterizeBox(const OrientedBox& b, uint16_t lab) {

@@ -23,6 +23,39 @@ TEST(GroundTruth, WallsOccupiedDoorOpeningFreeObjectsLabelled) {
   EXPECT_EQ(gt.state(gt.keyOf(Vec3(100, 0, 0))), VoxelState::Unknown);
 }
 
+// The Webots apartment's kitchen door: a 1 m wall piece with a 0.9 m opening between two
+// collinear walls 0.3 m thick. Their end caps (half the thickness past each end, so corners
+// close) must not narrow the door: it stays 0.9 m wide, the walls beside it stay solid.
+TEST(GroundTruth, NeighbouringWallsDoNotNarrowADoor) {
+  World w;
+  auto wall = [&](double y0, double y1, std::vector<Opening> openings) {
+    Wall wl;
+    wl.a = Vec2(0.0, y0);
+    wl.b = Vec2(0.0, y1);
+    wl.thickness = 0.3;
+    wl.z0 = 0.0;
+    wl.z1 = 2.4;
+    wl.openings = std::move(openings);
+    w.walls.push_back(wl);
+  };
+  Opening door;
+  door.start = 0.05, door.end = 0.95, door.bottom = 0.0, door.top = 1.95;
+  wall(0.0, 1.0, {door});   // opening y in [0.05, 0.95]
+  wall(-3.0, 0.0, {});      // its cap would reach y = 0.15
+  wall(1.0, 4.0, {});       // its cap would reach y = 0.85
+  w.has_floor = false;
+  GroundTruthGrid gt(w, 0.05);
+  int free = 0;
+  for (double y = -0.5; y <= 1.5; y += 0.05)
+    if (!gt.occupiedAt(Vec3(0.0, y + 0.025, 1.2))) ++free;
+  EXPECT_EQ(free, 18);                              // 0.9 m of 5 cm cells
+  EXPECT_FALSE(gt.occupiedAt(Vec3(0.1, 0.1, 1.2)));   // inside the door, in the neighbour's cap
+  EXPECT_FALSE(gt.occupiedAt(Vec3(-0.1, 0.9, 1.2)));
+  EXPECT_TRUE(gt.occupiedAt(Vec3(0.0, -0.05, 1.2)));  // the walls beside it
+  EXPECT_TRUE(gt.occupiedAt(Vec3(0.0, 1.05, 1.2)));
+  EXPECT_TRUE(gt.occupiedAt(Vec3(0.0, 0.5, 2.1)));    // the lintel
+}
+
 TEST(GroundTruth, RaycastEqualsAnalyticDistance) {
   World w = test::boxRoom(6, 4);
   GroundTruthGrid gt(w, 0.05);

@@ -57,6 +57,7 @@ class GroundTruthGrid : public OccupancyMap {
     return (size_t(l.z()) * dims_.y() + l.y()) * dims_.x() + l.x();
   }
   void rasterizeWall(const Wall& w);
+  void carveOpenings(const Wall& w);
   void rasterizeBox(const OrientedBox& b, uint16_t label);
   void fillKeyBox(const Vec3& lo, const Vec3& hi, uint16_t label);
 
