@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/test_priors.hpp"
+
 #include "ussnav/core/error.hpp"
 #include "ussnav/eval/region_oracle.hpp"
 #include "ussnav/reasoning/builtin_reasoner.hpp"
@@ -12,10 +14,7 @@ using namespace ussnav;
 
 namespace {
 
-std::shared_ptr<const CommonsensePriors> priors() {
-  static const auto p = CommonsensePriors::load(CommonsensePriors::defaultDir(), makeTextEncoder("wordnet"));
-  return p;
-}
+using test::priors;
 
 // Rooms A = [0,4], B = [4,8], C = [8,12] (x) by [0,4] (y); doors A-B and B-C; a bed in C, a
 // second bed (room_id unset) in A's twin D = [0,4] x [4,8], which has no door.

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/test_priors.hpp"
+
 #include "ussnav/reasoning/builtin_reasoner.hpp"
 #include "ussnav/reasoning/coarse_query.hpp"
 
@@ -10,10 +12,7 @@ using namespace ussnav;
 
 namespace {
 
-std::shared_ptr<const CommonsensePriors> priors() {
-  static const auto p = CommonsensePriors::load(CommonsensePriors::defaultDir(), makeTextEncoder("wordnet"));
-  return p;
-}
+using test::priors;
 
 RegionSummary region(int id, std::vector<std::string> labels, Vec3 min = Vec3(0, 0, 1), Vec3 max = Vec3(4, 4, 1)) {
   RegionSummary r;

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/test_priors.hpp"
+
 #include "support/fake_llm_server.hpp"
 #include "ussnav/core/error.hpp"
 #include "ussnav/reasoning/coarse_decider.hpp"
@@ -13,10 +15,7 @@ using Fake = test::FakeLlmServer;
 
 namespace {
 
-std::shared_ptr<const CommonsensePriors> priors() {
-  static const auto p = CommonsensePriors::load(CommonsensePriors::defaultDir(), makeTextEncoder("wordnet"));
-  return p;
-}
+using test::priors;
 
 ReasoningConfig llmConfig(const Fake& server) {
   ReasoningConfig cfg;

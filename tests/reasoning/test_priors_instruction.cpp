@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/test_priors.hpp"
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -14,10 +16,7 @@ using namespace ussnav;
 
 namespace {
 
-std::shared_ptr<const CommonsensePriors> priors() {
-  static const auto p = CommonsensePriors::load(CommonsensePriors::defaultDir(), makeTextEncoder("wordnet"));
-  return p;
-}
+using test::priors;
 
 std::string mostLikelyRoom(const std::string& label) {
   const auto row = priors()->roomsGivenObject(label);

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/test_priors.hpp"
+
 #include <fstream>
 
 #include "support/paths.hpp"
@@ -17,10 +19,7 @@ using namespace ussnav;
 
 namespace {
 
-std::shared_ptr<const CommonsensePriors> priors() {
-  static const auto p = CommonsensePriors::load(CommonsensePriors::defaultDir(), makeTextEncoder("wordnet"));
-  return p;
-}
+using test::priors;
 
 // Nodes along y = 2 at flight height through the door of test::twoRooms (x = 5, y 1.5..2.5),
 // region 0 = room A (x < 5), region 1 = room B; a fridge and a stove in A, a conference table

@@ -25,6 +25,7 @@ class OracleReasoner : public Reasoner {
   static constexpr double kMiss = 0.001;
 
   // `goal_rooms`: ids of the world's rooms that hold a goal instance; `labels` names regions.
+  // `world` must outlive the reasoner (the episode's simulator holds it).
   OracleReasoner(const World& world, std::set<int> goal_rooms, std::shared_ptr<Reasoner> labels);
   std::string name() const override { return "oracle"; }
   RegionSemantics labelRegion(const RegionSummary& region) override { return labels_->labelRegion(region); }
