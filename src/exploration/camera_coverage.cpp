@@ -66,6 +66,7 @@ void CameraCoverage::updateSeen(const DepthFrame& f) {
   for (int v = s / 2; v < K.height; v += s)
     for (int u = s / 2; u < K.width; u += s) {
       float d = f.depth[size_t(v) * K.width + u];
+      if (std::isnan(d) || d < 0) continue;  // invalid or too close: the pixel saw nothing (frame.hpp)
       double depth = (std::isfinite(d) && d > 0) ? double(d) : f.max_range;
       const Vec3 ray_c((u + 0.5 - K.cx) / K.fx, (v + 0.5 - K.cy) / K.fy, 1.0);
       const Vec3 dir = f.T_world_camera.linear() * ray_c;  // z-depth 1 along the optical axis

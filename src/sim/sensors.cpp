@@ -38,20 +38,30 @@ DepthFrame DepthCamera::render(const GroundTruthGrid& gt, const Pose& body, doub
   const Mat3 R = f.T_world_camera.linear();
   const Vec3 o = body.position;
   const bool noisy = cfg_.noise_std > 0.0 || cfg_.dropout > 0.0;
+  const float too_close = -std::numeric_limits<float>::infinity();  // REP 117: too close to measure
+  const float invalid = std::numeric_limits<float>::quiet_NaN();
   for (size_t i = 0; i < n; ++i) {
-    const GroundTruthGrid::Hit h = gt.raycast(o, R * rays_[i], cfg_.max_range);
+    // max_range bounds the z-depth, as DepthFrame::max_range does for the consumers, which
+    // carve a no-return pixel free up to that z-depth: a ray off the optical axis is cast to
+    // the longer range max_range / zfac, or a wall beyond max_range in range but not in z-depth
+    // would be reported as no return and carved through.
+    const GroundTruthGrid::Hit h = gt.raycast(o, R * rays_[i], cfg_.max_range / zfac_[i]);
     if (!h.hit) continue;
     double z = h.range * zfac_[i];
-    if (h.range < cfg_.min_range) continue;  // too close: the D455 returns nothing
+    if (h.range < cfg_.min_range) {  // too close: the D455 returns nothing, and nothing is carved
+      f.depth[i] = too_close;
+      continue;
+    }
     f.instance[i] = uint16_t(gt.instanceOfLabel(h.label));
     if (noisy) {
-      if (cfg_.dropout > 0.0 && rng_.bernoulli(cfg_.dropout)) {
+      if (cfg_.dropout > 0.0 && rng_.bernoulli(cfg_.dropout)) {  // a lost pixel: invalid, not "no return"
         f.instance[i] = 0;
+        f.depth[i] = invalid;
         continue;
       }
       if (cfg_.noise_std > 0.0) z = std::max(0.01, z + rng_.normal(0.0, cfg_.noise_std));
     }
-    f.depth[i] = float(z);
+    f.depth[i] = float(std::min(z, cfg_.max_range));
   }
   return f;
 }

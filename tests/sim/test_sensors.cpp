@@ -1,8 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstring>
 #include <set>
 
 #include "support/test_worlds.hpp"
+#include "ussnav/mapping/rolling_grid.hpp"
 #include "ussnav/sim/sensors.hpp"
 #include "ussnav/sim/uav.hpp"
 
@@ -41,6 +44,66 @@ TEST(DepthCamera, DepthMatchesWallWithinOneVoxel) {
   EXPECT_NEAR(f.depth[size_t(60) * f.K.width + 80], 3.95, 0.06);
 }
 
+// max_range bounds the z-depth (frame.hpp), not the range along the ray: off-axis pixels see
+// a wall whose z-depth is within max_range even where their range is not.
+TEST(DepthCamera, RangeLimitIsZDepthSoEveryPixelFacingANearWallReturns) {
+  World w = test::boxRoom(6, 4);
+  GroundTruthGrid gt(w, 0.05);
+  CameraConfig cc;
+  cc.max_range = 4.6;
+  DepthCamera cam(cc);
+  // Facing +x, the far wall's inner face (x = 5.95) at z-depth 4.5; pixels more than 12 deg off
+  // the axis meet it beyond 4.6 m of range. Every other surface in view is nearer.
+  const DepthFrame f = cam.render(gt, Pose{Vec3(1.45, 2.0, 1.4), 0.0});
+  int far_wall_off_axis = 0;
+  for (int v = 0; v < f.K.height; ++v)
+    for (int u = 0; u < f.K.width; ++u) {
+      const float z = f.depth[size_t(v) * f.K.width + u];
+      ASSERT_TRUE(std::isfinite(z) && z > 0.0f && z <= 4.6f) << u << "," << v << ": " << z;
+      const Vec3 p = backProject(f, u, v);
+      const double range = (p - Vec3(1.45, 2.0, 1.4)).norm();
+      if (p.x() > 5.8 && range > 4.6) ++far_wall_off_axis;
+    }
+  EXPECT_GT(far_wall_off_axis, 1000);
+}
+
+// Too close to measure is -inf (REP 117), never 0: 0 would mean "nothing within range".
+TEST(DepthCamera, AWallNearerThanMinRangeIsTooCloseNotNoReturn) {
+  World w = test::boxRoom(6, 4);
+  GroundTruthGrid gt(w, 0.05);
+  CameraConfig cc;  // min_range 0.2
+  DepthCamera cam(cc);
+  const DepthFrame f = cam.render(gt, Pose{Vec3(5.8, 2.0, 1.4), 0.0});  // 0.15 m from the wall face
+  const float centre = f.depth[size_t(60) * f.K.width + 80];
+  EXPECT_TRUE(std::isinf(centre) && centre < 0) << centre;
+  EXPECT_EQ(std::count(f.depth.begin(), f.depth.end(), 0.0f), 0);
+}
+
+// The camera feeding the occupancy grid (episode.fuse_depth) must never free space behind a
+// wall. With the range limit taken as a range, off-axis pixels reported "no return" and the
+// grid carved them free to z-depth max_range, up to 0.4 m past this wall.
+TEST(DepthCamera, FusedIntoTheGridItFreesNothingBehindAWall) {
+  World w = test::boxRoom(6, 4);
+  GroundTruthGrid gt(w, 0.05);
+  CameraConfig cc;
+  cc.max_range = 4.6;
+  DepthCamera cam(cc);
+  const Vec3 p(1.45, 2.0, 1.4);
+  RollingGrid grid(GridConfig{}, p + Vec3(3.0, 0.0, 0.0));  // window x in [0.45, 8.45)
+  for (double yaw : {-0.3, 0.0, 0.3}) grid.insertDepth(cam.render(gt, Pose{p, yaw}));
+  int free_inside = 0, free_behind = 0;
+  for (int x = 5; x < 84; ++x)
+    for (int y = -3; y < 44; ++y)
+      for (int z = 2; z < 26; ++z) {
+        const Vec3i k(x, y, z);
+        if (grid.state(k) != VoxelState::Free) continue;
+        // Beyond the walls' outer faces (x = 6.05, y = -0.05 and 4.05): x >= 6.1, y < -0.1, y >= 4.1.
+        (x >= 61 || y <= -2 || y >= 41 ? free_behind : free_inside) += 1;
+      }
+  EXPECT_GT(free_inside, 5000);
+  EXPECT_EQ(free_behind, 0);
+}
+
 TEST(DepthCamera, InstanceIdsAreExactlyTheObjectsInView) {
   World w = test::twoRooms(true);
   const int in_view = test::addObject(w, "chair", Vec3(4.0, 2.0, 0.5), Vec3(0.25, 0.25, 0.5));
@@ -76,10 +139,16 @@ TEST(DepthCamera, NoiseAndDropoutAreSeededAndDeterministic) {
   DepthCamera a(cc, 7), b(cc, 7), c(cc, 8);
   const Pose pose{Vec3(2, 2, 1.2), 0.3};
   const auto fa = a.render(gt, pose), fb = b.render(gt, pose), fc = c.render(gt, pose);
-  EXPECT_EQ(fa.depth, fb.depth);
-  EXPECT_NE(fa.depth, fc.depth);
-  const auto zeros = std::count(fa.depth.begin(), fa.depth.end(), 0.0f);
-  EXPECT_NEAR(double(zeros) / fa.depth.size(), 0.1, 0.03);
+  // Bitwise (NaN != NaN as floats).
+  auto same = [](const std::vector<float>& a, const std::vector<float>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+  };
+  EXPECT_TRUE(same(fa.depth, fb.depth));
+  EXPECT_FALSE(same(fa.depth, fc.depth));
+  // A dropped pixel is invalid (NaN), not "no return": nothing is carved through it.
+  const auto lost = std::count_if(fa.depth.begin(), fa.depth.end(), [](float d) { return std::isnan(d); });
+  EXPECT_NEAR(double(lost) / fa.depth.size(), 0.1, 0.03);
+  EXPECT_EQ(std::count(fa.depth.begin(), fa.depth.end(), 0.0f), 0);
 }
 
 TEST(Lidar, PointsLieOnSurfacesWithinTheBand) {

@@ -17,14 +17,16 @@ struct Intrinsics {
 };
 
 // A depth image with its camera pose. depth[v*width+u] is the z-depth in metres along the
-// optical axis; 0 or NaN means no return (nothing within range). instance (optional, same
+// optical axis (ROS REP 117): 0 or +inf = no return (nothing within max_range, in z-depth, so
+// consumers may take the pixel's ray as free up to there); -inf = too close to measure; NaN =
+// invalid. Neither of the last two says anything about free space. instance (optional, same
 // size) is the ground-truth object instance id per pixel, 0 = no object (walls, floor, none).
 struct DepthFrame {
   Intrinsics K;
   Iso3 T_world_camera = Iso3::Identity();  // camera-to-world (optical frame)
   std::vector<float> depth;
   std::vector<uint16_t> instance;
-  double max_range = 5.0;                  // no-return pixels are free up to this
+  double max_range = 5.0;                  // z-depth; no-return pixels are free up to this
   double stamp = 0.0;                      // seconds
 };
 

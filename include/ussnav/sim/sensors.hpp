@@ -3,6 +3,10 @@
 // (z-depth + per-pixel instance id) and a LiDAR like the Livox Mid-360 (360 deg x -7..52 deg,
 // non-repetitive pattern). Ray directions are precomputed per configuration; each render is
 // one DDA per pixel/point. Noise and dropout come from a seeded Rng (deterministic).
+// Depth pixels follow frame.hpp (REP 117): camera.max_range bounds the z-depth (each pixel's
+// ray is cast to max_range / cos of its angle off the axis), a surface nearer than min_range is
+// -inf (too close), a dropped pixel NaN (invalid), and 0 only means nothing within max_range,
+// so a consumer carving no-return pixels free never carves through a surface.
 
 #include <cstdint>
 #include <vector>
