@@ -17,6 +17,12 @@ Vec3 backProject(const DepthFrame& f, int u, int v) {
   const Vec3 pc((u - f.K.cx) / f.K.fx * z, (v - f.K.cy) / f.K.fy * z, z);
   return f.T_world_camera * pc;
 }
+// The 6 x 4 m box room of the tests below (walls 0.1 m thick: inner faces x = 5.95, y = 0.05 / 3.95).
+const GroundTruthGrid& boxRoomTruth() {
+  static const World w = test::boxRoom(6, 4);
+  static const GroundTruthGrid gt(w, 0.05);
+  return gt;
+}
 }  // namespace
 
 TEST(DepthCamera, DepthMatchesWallWithinOneVoxel) {
@@ -47,8 +53,7 @@ TEST(DepthCamera, DepthMatchesWallWithinOneVoxel) {
 // max_range bounds the z-depth (frame.hpp), not the range along the ray: off-axis pixels see
 // a wall whose z-depth is within max_range even where their range is not.
 TEST(DepthCamera, RangeLimitIsZDepthSoEveryPixelFacingANearWallReturns) {
-  World w = test::boxRoom(6, 4);
-  GroundTruthGrid gt(w, 0.05);
+  const GroundTruthGrid& gt = boxRoomTruth();
   CameraConfig cc;
   cc.max_range = 4.6;
   DepthCamera cam(cc);
@@ -69,8 +74,7 @@ TEST(DepthCamera, RangeLimitIsZDepthSoEveryPixelFacingANearWallReturns) {
 
 // Too close to measure is -inf (REP 117), never 0: 0 would mean "nothing within range".
 TEST(DepthCamera, AWallNearerThanMinRangeIsTooCloseNotNoReturn) {
-  World w = test::boxRoom(6, 4);
-  GroundTruthGrid gt(w, 0.05);
+  const GroundTruthGrid& gt = boxRoomTruth();
   CameraConfig cc;  // min_range 0.2
   DepthCamera cam(cc);
   const DepthFrame f = cam.render(gt, Pose{Vec3(5.8, 2.0, 1.4), 0.0});  // 0.15 m from the wall face
@@ -83,8 +87,7 @@ TEST(DepthCamera, AWallNearerThanMinRangeIsTooCloseNotNoReturn) {
 // wall. With the range limit taken as a range, off-axis pixels reported "no return" and the
 // grid carved them free to z-depth max_range, up to 0.4 m past this wall.
 TEST(DepthCamera, FusedIntoTheGridItFreesNothingBehindAWall) {
-  World w = test::boxRoom(6, 4);
-  GroundTruthGrid gt(w, 0.05);
+  const GroundTruthGrid& gt = boxRoomTruth();
   CameraConfig cc;
   cc.max_range = 4.6;
   DepthCamera cam(cc);
