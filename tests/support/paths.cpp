@@ -5,6 +5,8 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
+#include <vector>
 
 namespace ussnav::test {
 
@@ -26,11 +28,29 @@ int runCommand(const std::string& cmd, std::string* output) {
   return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 }
 
+namespace {
+// Folders handed out by tempDir(); removed when the test process exits (each CTest test is its
+// own process), unless USSNAV_KEEP_TEST_FILES is set for debugging.
+struct TempDirs {
+  std::vector<std::filesystem::path> dirs;
+  ~TempDirs() {
+    if (std::getenv("USSNAV_KEEP_TEST_FILES")) return;
+    std::error_code ec;
+    for (const auto& d : dirs) std::filesystem::remove_all(d, ec);
+  }
+};
+TempDirs& tempDirs() {
+  static TempDirs t;
+  return t;
+}
+}  // namespace
+
 std::filesystem::path tempDir(const std::string& name) {
   auto d = std::filesystem::temp_directory_path() /
            ("ussnav_test_" + name + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(d);
   std::filesystem::create_directories(d);
+  tempDirs().dirs.push_back(d);
   return d;
 }
 

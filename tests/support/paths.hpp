@@ -14,7 +14,8 @@ bool haveSharedData();
 std::string cliPath();
 // Runs a shell command, returns its exit status; stdout+stderr captured into `output`.
 int runCommand(const std::string& cmd, std::string* output = nullptr);
-// A fresh temporary folder unique to the calling test.
+// A fresh temporary folder unique to the calling test; removed when the test process exits
+// (set USSNAV_KEEP_TEST_FILES=1 to keep it for debugging).
 std::filesystem::path tempDir(const std::string& name);
 
 }  // namespace ussnav::test
