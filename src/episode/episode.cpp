@@ -376,6 +376,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
     // 2. Otherwise explore.
     if (!end && !approaching) {
       bool need = !g.active || uav.pathDone();
+      const char* why = !g.active ? "no target" : "path done";  // debug output only
       if (g.active && uav.pathDone()) {
         const double dyaw = std::abs(wrapAngle(g.vp.yaw - uav.pose().yaw));
         need = dyaw < 0.05 || (uav.pose().position - g.vp.position).norm() > ep.goal_tolerance;  // turned, or dropped
@@ -400,12 +401,12 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
           for (const Vec2i& c : g.patch_cells) unseen += !camera.isSeen(c);
           alive = unseen >= std::max(1, cfg.exploration.unseen_min_cells / 2);
         }
-        if (!alive) need = true;
+        if (!alive) need = true, why = "target gone or moved";
       }
       if (g.active && !need && !uav.pathDone()) {
         // Every frame: the next metres of the path against what the map knows now.
         const InflatedMap inflated(grid, std::min(cfg.sim.uav.radius + 0.1, path_clearance));
-        if (pathBlocked(inflated, uav.remainingPath(), 4.0)) need = true;
+        if (pathBlocked(inflated, uav.remainingPath(), 4.0)) need = true, why = "path blocked";
       }
       if (need && spins_left > 0 && !uav.idle()) need = false;  // finish the current spin step
       if (need) {
@@ -448,8 +449,8 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
           targets.push_back(std::move(tg));
         }
         if (std::getenv("USSNAV_DEBUG_EPISODE"))
-          std::fprintf(stderr, "[t=%.1f] frontiers %zu (cells %zu) patches %zu targets %zu blacklist %zu spins %d\n", t,
-                       frontiers.frontiers().size(), frontiers.cellCount(), patches.size(), targets.size(), blacklist.size(), spins_left);
+          std::fprintf(stderr, "[t=%.1f] replan (%s): frontiers %zu (cells %zu) patches %zu targets %zu blacklist %zu spins %d\n", t,
+                       why, frontiers.frontiers().size(), frontiers.cellCount(), patches.size(), targets.size(), blacklist.size(), spins_left);
         for (ExplorationTarget& tg : targets) {
           const int node = mapper.anchorNode(tg.viewpoints.front().position);
           tg.region = node >= 0 ? mapper.regions().regionOf(node) : -1;
