@@ -96,8 +96,15 @@ std::optional<std::vector<Vec3>> planFrom(const ConnectivityGraph& g, const Roll
         return std::nullopt;
       }
       if (!inWindow(b)) {
-        // The map only knows the part inside the window: detour to where the segment leaves
-        // it (0.3 m inside), and keep the rest, to be re-checked when the window gets there.
+        // The map only knows the part inside the window: a voxel path that treats the space
+        // beyond as passable (checked again when the window gets there) ...
+        if (auto through = gridPath(inflated, a, b, 3.0 * (b - a).norm() + 1.0, false, 1)) {
+          out.insert(out.end(), through->begin() + 1, through->end());
+          continue;
+        }
+        // ... else a detour to where the segment leaves it (0.3 m inside), keeping the rest
+        // when that does not cross what the window shows blocked either (the flight loop
+        // would reject the path as soon as it is flown, and the same path would come back).
         const double len = (b - a).norm();
         double s_exit = 0.0;
         for (double s2 = 0.0; s2 <= len; s2 += 0.5 * grid.resolution())
@@ -105,7 +112,8 @@ std::optional<std::vector<Vec3>> planFrom(const ConnectivityGraph& g, const Roll
         const Vec3 c0 = a + (b - a) * (std::max(0.0, s_exit - 0.3) / len);
         const std::optional<Vec3> c = snapFree(inflated, c0, 0.6);
         std::optional<std::vector<Vec3>> part;
-        if (c) part = gridPath(inflated, a, *c, 3.0 * (*c - a).norm() + 1.0, false, 1);
+        if (c && !castRay(inflated, *c, b, false).blocked)
+          part = gridPath(inflated, a, *c, 3.0 * (*c - a).norm() + 1.0, false, 1);
         if (!part) {
           if (dbg) std::fprintf(stderr, "  path: blocked segment leaving the window, no detour\n");
           return std::nullopt;

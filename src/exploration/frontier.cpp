@@ -40,13 +40,20 @@ FrontierFinder::FrontierFinder(const ExplorationConfig& cfg) : cfg_(cfg) {
 }
 
 bool FrontierFinder::isFrontierVoxel(const RollingGrid& grid, const CoverageMask& gcm, const Vec3i& key,
-                                     const ExplorationConfig& cfg) {
+                                     const ExplorationConfig& cfg, const BandMemory* seen) {
   if (!grid.inWindow(key) || grid.stateFast(key) != VoxelState::Free) return false;
   int zlo = 0, zhi = 0;
   bandKeys(cfg, grid.resolution(), zlo, zhi);
   if (key.z() < zlo || key.z() > zhi) return false;
   bool unknown_next = false;
-  for (const Vec3i& d : kSix) unknown_next = unknown_next || grid.state(key + d) == VoxelState::Unknown;
+  for (const Vec3i& d : kSix) {
+    const Vec3i n = key + d;
+    if (grid.state(n) != VoxelState::Unknown) continue;
+    // Beyond the window: unexplored only if that voxel was never known.
+    if (seen && !grid.inWindow(n) && seen->known(n)) continue;
+    unknown_next = true;
+    break;
+  }
   return unknown_next && !gcm.isVisited(gcm.cellOfKey(key));
 }
 
@@ -74,6 +81,11 @@ FrontierUpdate FrontierFinder::update(const RollingGrid& grid, const CoverageMas
   touched_.clear();
   affected_.clear();
   const Vec3i wlo = grid.minKey(), whi = grid.minKey() + grid.dims() - Vec3i::Ones();
+  if (!initialised_) {
+    int zlo = 0, zhi = 0;
+    bandKeys(cfg_, grid.resolution(), zlo, zhi);
+    seen_ = BandMemory(zlo, zhi - zlo + 1);
+  }
   const bool missed = !initialised_ || consumed_ < grid.changeSeqBegin() || consumed_ > grid.changeSeqEnd();
   if (missed) {
     up.full_rescan = true;
@@ -125,6 +137,7 @@ void FrontierFinder::scanBox(const RollingGrid& grid, const CoverageMask& gcm, V
         const Vec3i k(x, y, z);
         ++up.voxels_scanned;
         const VoxelState s = grid.stateFast(k);
+        if (s != VoxelState::Unknown && cfg_.remember_known_band) seen_.mark(k);
         const uint64_t p = pack(k);
         if (s == VoxelState::Occupied) {  // fast path: never a frontier
           const auto it = cells_.find(p);
@@ -139,7 +152,8 @@ void FrontierFinder::scanBox(const RollingGrid& grid, const CoverageMask& gcm, V
         const bool present = it != cells_.end();
         // An Unknown voxel holding a frontier cell re-entered the window unseen: it persists
         // until a frame makes it known.
-        const bool now = s == VoxelState::Unknown ? present : isFrontierVoxel(grid, gcm, k, cfg_);
+        const bool now =
+            s == VoxelState::Unknown ? present : isFrontierVoxel(grid, gcm, k, cfg_, cfg_.remember_known_band ? &seen_ : nullptr);
         if (now && !present) {
           cells_.emplace(p, kUnclustered);
           touched_.push_back(p);

@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <set>
 
 #include "support/mapping_scenes.hpp"
@@ -274,6 +275,36 @@ TEST(Frontier, PersistOutsideWindowAndVanishWhenKnown) {
         EXPECT_EQ(d.finder.isFrontierCell(k), bruteFrontier(d.grid, d.gcm, k, cfg));
       }
   expectCellsMatchBruteForce(d, cfg, "corridor end");
+}
+
+// Frontier cells on the window's outer layer on the side of `side` (-1: low x, +1: high x).
+int outerLayerCells(const Driver& d, int side) {
+  const int x = side < 0 ? d.grid.minKey().x() : d.grid.minKey().x() + d.grid.dims().x() - 1;
+  int n = 0;
+  for (const Vec3i& k : d.finder.frontierCells()) n += k.x() == x;
+  return n;
+}
+
+TEST(Frontier, WindowEdgeInSpaceSeenBeforeMakesNoFrontier) {
+  // Fly down a corridor looking ahead, then turn and look back: the free space behind runs out
+  // at the window's edge, but those voxels were seen on the way in. Without the band memory
+  // the edge makes frontier cells there (where wall-cut coverage cells are never visited);
+  // with it none. Looking ahead into space never seen still makes them (the test above).
+  const BoxScene scene = test::corridor(30.0, 3.0, 2.7);
+  auto fly = [&](bool remember) {
+    ExplorationConfig cfg;
+    cfg.remember_known_band = remember;
+    auto d = std::make_unique<Driver>(cfg, Vec3(2, 0, 1.2));
+    for (double x = 2.0; x <= 14.0; x += 0.5) d->depth(scene, Vec3(x, 0, 1.2), 0.0);
+    const int ahead = outerLayerCells(*d, +1);
+    for (int i = 0; i < 3; ++i) d->depth(scene, Vec3(14, 0, 1.2), kPi);
+    std::printf("[ remember %d ] frontier cells on the leading edge %d, on the edge behind %d\n", remember, ahead,
+                outerLayerCells(*d, -1));
+    EXPECT_GT(ahead, 20) << "the corridor ahead was never seen: its edge is a frontier";
+    return outerLayerCells(*d, -1);
+  };
+  EXPECT_GT(fly(false), 20);
+  EXPECT_EQ(fly(true), 0);
 }
 
 TEST(Frontier, RejectsEmptyBand) {

@@ -2,8 +2,9 @@
 // The path the UAV flies to a goal (issue 7, flight loop): A* on the connectivity graph
 // (findGraphPath, edges re-checked against the grid), then line-of-sight shortcutting in the
 // grid inflated by the UAV's clearance, then every segment that still comes closer than the
-// clearance to a known obstacle is replaced by a voxel A* path in the inflated grid where the
-// window covers it. When the graph has no path and the goal lies in the window, a voxel A*
+// clearance to a known obstacle is replaced by a voxel A* path in the inflated grid (one that
+// leaves the window may cross the unknown space beyond it, re-checked when the window gets
+// there). When the graph has no path and the goal lies in the window, a voxel A*
 // through known free, inflated space is the fallback. When the UAV itself stands inside the
 // clearance margin (the map grew an obstacle next to it), the path first steps straight to the
 // nearest voxel with full clearance within 0.8 m that it can reach keeping `body_radius` from

@@ -6,12 +6,17 @@
 // the window: O(those voxels + frontier cells re-clustered); a whole-window rescan only when
 // change entries were missed. Hence exact for every known voxel not on the window's outer
 // layer; on that layer only voxels a frame touched are frontiers (free space the sensor saw
-// run out of the window), so the trailing edge of a moving window makes none.
+// run out of the window), so the trailing edge of a moving window makes none. With
+// remember_known_band a neighbour outside the window counts as Unknown only if that voxel was
+// never known while in the window (BandMemory): looking back at space flown before,
+// the window's edge makes no frontier (cells cut by a wall are never visited, so the Coverage
+// Mask alone would let those flicker: there while away, gone when approached).
 // Connected cells (26-neighbours) of at least min_cluster_cells form clusters, split by PCA
 // while longer than max_cluster_extent; each has viewpoints (viewpoint.hpp, computed when the
 // cluster is made) and the connectivity-graph node given when it was made. Cells that leave
 // the window persist untouched until a frame makes them known or a visited coverage cell
-// covers them. Memory: one hash entry per frontier cell.
+// covers them. Memory: one hash entry per frontier cell, one bit per band voxel ever
+// known (64 bits per x-y column).
 
 #include <cstdint>
 #include <unordered_map>
@@ -21,6 +26,7 @@
 #include "ussnav/core/types.hpp"
 #include "ussnav/exploration/viewpoint.hpp"
 #include "ussnav/mapping/coverage_mask.hpp"
+#include "ussnav/mapping/band_memory.hpp"
 #include "ussnav/mapping/rolling_grid.hpp"
 
 namespace ussnav {
@@ -61,9 +67,12 @@ class FrontierFinder {
   bool isFrontierCell(const Vec3i& key) const { return cells_.count(pack(key)) != 0; }
   size_t cellCount() const { return cells_.size(); }
 
-  // The rule applied to an in-window voxel, without memory (for tests and tools).
+  // The rule applied to an in-window voxel (for tests and tools); `seen` (may be null): band
+  // voxels known before, which make an out-of-window neighbour no Unknown.
   static bool isFrontierVoxel(const RollingGrid& grid, const CoverageMask& gcm, const Vec3i& key,
-                              const ExplorationConfig& cfg);
+                              const ExplorationConfig& cfg, const BandMemory* seen = nullptr);
+  // Band voxels ever known (remember_known_band).
+  const BandMemory& knownBand() const { return seen_; }
 
   const ExplorationConfig& config() const { return cfg_; }
 
@@ -84,6 +93,7 @@ class FrontierFinder {
   void markAffected(int owner);
 
   ExplorationConfig cfg_;
+  BandMemory seen_;                          // band voxels ever known (remember_known_band)
   std::unordered_map<uint64_t, int> cells_;  // frontier cell -> frontier id, -1 unclustered
   std::vector<Frontier> frontiers_;
   std::unordered_map<int, size_t> index_;    // id -> position in frontiers_
