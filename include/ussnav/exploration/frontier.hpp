@@ -71,8 +71,6 @@ class FrontierFinder {
   // voxels known before, which make an out-of-window neighbour no Unknown.
   static bool isFrontierVoxel(const RollingGrid& grid, const CoverageMask& gcm, const Vec3i& key,
                               const ExplorationConfig& cfg, const BandMemory* seen = nullptr);
-  // Band voxels ever known (remember_known_band).
-  const BandMemory& knownBand() const { return seen_; }
 
   const ExplorationConfig& config() const { return cfg_; }
 

@@ -24,12 +24,7 @@ class BandMemory {
   void mark(const Vec3i& k) {
     const int b = k.z() - z_lo_;
     if (b < 0 || b >= layers_) return;
-    const uint64_t c = chunkKey(k.x(), k.y());
-    if (c != last_key_ || !last_) {
-      last_ = &chunks_[c];
-      last_key_ = c;
-    }
-    (*last_)[size_t(index(k.x(), k.y()))] |= uint64_t(1) << b;
+    chunks_[chunkKey(k.x(), k.y())][size_t(index(k.x(), k.y()))] |= uint64_t(1) << b;
   }
   bool known(const Vec3i& k) const {
     const int b = k.z() - z_lo_;
@@ -39,10 +34,7 @@ class BandMemory {
   }
   size_t chunks() const { return chunks_.size(); }
   size_t memoryBytes() const { return chunks_.size() * (sizeof(Chunk) + 32) + sizeof(*this); }
-  void clear() {
-    chunks_.clear();
-    last_ = nullptr;
-  }
+  void clear() { chunks_.clear(); }
 
  private:
   static constexpr int kBits = 5;  // 32 x 32 columns per chunk
@@ -56,9 +48,7 @@ class BandMemory {
   }
   int z_lo_;
   int layers_;
-  std::unordered_map<uint64_t, Chunk> chunks_;
-  Chunk* last_ = nullptr;  // the chunk marked last (pointers into the map stay valid)
-  uint64_t last_key_ = 0;
+  std::unordered_map<uint64_t, Chunk> chunks_;  // value-initialised (zero) on first mark
 };
 
 }  // namespace ussnav
