@@ -147,7 +147,8 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
   if ((spec.planner == "full" && !coarse) || goal_room >= 0) {
     if (cfg.reasoning.reasoner == "oracle") {
       oracle = std::make_shared<OracleReasoner>(sim.world(), roomsOf(sim.world(), truth.instances),
-                                                std::make_shared<BuiltinReasoner>(priors));
+                                                std::make_shared<BuiltinReasoner>(priors),
+                                                cfg.reasoning.min_chance_ratio);
       reasoner = oracle;
     } else {
       reasoner = makeReasoner(cfg.reasoning, priors);

@@ -6,8 +6,9 @@
 
 namespace ussnav {
 
-OracleReasoner::OracleReasoner(const World& world, std::set<int> goal_rooms, std::shared_ptr<Reasoner> labels)
-    : world_(world), goal_rooms_(std::move(goal_rooms)), labels_(std::move(labels)) {
+OracleReasoner::OracleReasoner(const World& world, std::set<int> goal_rooms, std::shared_ptr<Reasoner> labels,
+                               double min_chance_ratio)
+    : world_(world), goal_rooms_(std::move(goal_rooms)), labels_(std::move(labels)), min_chance_ratio_(min_chance_ratio) {
   for (const Door& d : world_.doors) {
     if (goal_rooms_.count(d.room_a) && d.room_b >= 0) next_to_goal_.insert(d.room_b);
     if (goal_rooms_.count(d.room_b) && d.room_a >= 0) next_to_goal_.insert(d.room_a);
@@ -38,7 +39,7 @@ double OracleReasoner::chance(const RegionState& r) const {
 }
 
 CoarseDecision OracleReasoner::chooseRegion(const CoarseQuery& q) {
-  return chooseByChance(q, [&](const RegionState& r) { return chance(r); });
+  return chooseByChance(q, [&](const RegionState& r) { return chance(r); }, min_chance_ratio_);
 }
 
 std::set<int> roomsOf(const World& world, const std::vector<const Object*>& objects) {

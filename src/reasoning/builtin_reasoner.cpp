@@ -25,7 +25,8 @@ std::string article(const std::string& w) {
 
 }  // namespace
 
-BuiltinReasoner::BuiltinReasoner(std::shared_ptr<const CommonsensePriors> priors) : priors_(std::move(priors)) {}
+BuiltinReasoner::BuiltinReasoner(std::shared_ptr<const CommonsensePriors> priors, double min_chance_ratio)
+    : priors_(std::move(priors)), min_chance_ratio_(min_chance_ratio) {}
 
 std::vector<double> BuiltinReasoner::roomDistribution(const std::vector<std::string>& labels, int* known) const {
   const size_t R = priors_->rooms().size();
@@ -149,10 +150,11 @@ double blendChance(const RegionState& r, double s_self, double s_next) {
 }
 
 CoarseDecision BuiltinReasoner::chooseRegion(const CoarseQuery& q) {
-  return chooseByChance(q, [&](const RegionState& r) { return targetChance(q, r); });
+  return chooseByChance(q, [&](const RegionState& r) { return targetChance(q, r); }, min_chance_ratio_);
 }
 
-CoarseDecision chooseByChance(const CoarseQuery& q, const std::function<double(const RegionState&)>& chance) {
+CoarseDecision chooseByChance(const CoarseQuery& q, const std::function<double(const RegionState&)>& chance,
+                              double min_chance_ratio) {
   const Stopwatch sw;
   CoarseDecision d;
   double best = -1.0;
@@ -162,12 +164,20 @@ CoarseDecision chooseByChance(const CoarseQuery& q, const std::function<double(c
   // UAV flies back and forth); before any choice, or once it is done, the current region.
   const RegionState* last = q.find(q.last_choice);
   const int stay = last && last->frontiers > 0 && last->cost_s >= 0.0 ? q.last_choice : q.current_region;
+  const RegionState* global = nullptr;  // the region of the best gain / cost target
+  double global_s = 0.0;
   for (const RegionState& r : q.regions) {
     if (r.frontiers <= 0 || r.cost_s < 0.0) continue;
     const double s = chance(r);
     double v = (s + 0.02) * r.best_utility;
+    if (!global || r.best_utility > global->best_utility) global = &r, global_s = s;
     if (r.id == stay) v *= kStay;
     if (v > best) best = v, d.region = r.id, best_s = s;
+  }
+  // Semantics too weak to act on: the global-utility choice.
+  if (global && global->id != d.region && min_chance_ratio > 0.0 && best_s < min_chance_ratio * global_s) {
+    d.region = global->id, best_s = global_s;
+    d.global_utility = true;
   }
   if (d.region < 0) {
     d.fault = "no_frontiers";
@@ -178,7 +188,8 @@ CoarseDecision chooseByChance(const CoarseQuery& q, const std::function<double(c
     why.setf(std::ios::fixed);
     why.precision(2);
     why << "region " << d.region << " (" << (r->label.empty() ? "unlabelled" : r->label) << "): chance " << best_s
-        << ", " << r->frontiers << " targets, " << r->cost_s << " s away";
+        << ", " << r->frontiers << " targets, " << r->cost_s << " s away"
+        << (d.global_utility ? " (best gain / cost: no region's chance stands out)" : "");
     d.reason = why.str();
   }
   d.latency_ms = sw.ms();

@@ -93,6 +93,7 @@ int CoarseDecider::choose(const PlanInput& in, const std::vector<RegionCandidate
     committed_ = -1;
     return -1;  // the planner's global-utility choice
   }
+  stats_.global_utility += d.global_utility;
   if (d.region != committed_) committed_t_ = in.time;
   committed_ = d.region;
   return d.region;
@@ -107,6 +108,7 @@ nlohmann::json CoarseDecider::report() const {
           {"kept", stats_.kept},
           {"no_regions", stats_.no_regions},
           {"fallbacks", stats_.fallbacks},
+          {"global_utility", stats_.global_utility},
           {"faults", stats_.faults},
           {"decision_ms", latencySummary(stats_.latency_ms)}};
 }

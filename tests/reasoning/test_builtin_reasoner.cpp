@@ -114,8 +114,9 @@ TEST(BuiltinReasoner, CostAndRoomConstraintsCount) {
 
 TEST(BuiltinReasoner, KeepsTheRegionItChoseUnlessAnotherIsClearlyBetter) {
   // Two bare regions, equal chance: the best target of region 5 is worth 100/10, of region 6
-  // 110/10. The UAV stands in neither (current region 4, nothing left there).
-  BuiltinReasoner R(priors());
+  // 110/10. The UAV stands in neither (current region 4, nothing left there). The commitment
+  // rule alone (min_chance_ratio 0: see ChanceDecidesOnlyWhenItStandsOut).
+  BuiltinReasoner R(priors(), 0.0);
   CoarseQuery q;
   q.instruction = interpretInstruction("bed", *priors());
   q.regions = {state(4, {}, 0), state(5, {}, 3, 100, 10), state(6, {}, 3, 110, 10)};
@@ -128,6 +129,32 @@ TEST(BuiltinReasoner, KeepsTheRegionItChoseUnlessAnotherIsClearlyBetter) {
   q.regions[2].best_utility = 11;
   q.regions[1] = state(5, {}, 0);          // the chosen region is done: no bonus left for it
   EXPECT_EQ(R.chooseRegion(q).region, 6);
+}
+
+TEST(BuiltinReasoner, ChanceDecidesOnlyWhenItStandsOut) {
+  // Region 5's best target is worth 100/10, region 6's 60/10. The chance s is given directly.
+  CoarseQuery q;
+  q.regions = {state(4, {}, 0), state(5, {}, 3, 100, 10), state(6, {}, 3, 60, 10)};
+  q.current_region = 4;
+  auto choose = [&](double s5, double s6, double ratio) {
+    return chooseByChance(q, [&](const RegionState& r) { return r.id == 5 ? s5 : r.id == 6 ? s6 : 0.0; }, ratio);
+  };
+  // Twice the chance: region 6 is worth (0.40 + 0.02) * 6 = 2.52 against (0.20 + 0.02) * 10 = 2.2.
+  EXPECT_EQ(choose(0.20, 0.40, 1.5).region, 6);
+  EXPECT_FALSE(choose(0.20, 0.40, 1.5).global_utility);
+  // 1.5x the chance wins only with the commitment bonus (last choice 6: 0.32 * 6 * 1.2 = 2.30 >
+  // 2.2), and 0.30 is under 1.5 x 0.20: too close to act on.
+  q.last_choice = 6;
+  EXPECT_EQ(choose(0.20, 0.30, 0.0).region, 6);  // rule off: the commitment keeps region 6
+  const CoarseDecision d = choose(0.20, 0.30, 1.5);
+  EXPECT_EQ(d.region, 5);                          // the global-utility region
+  EXPECT_TRUE(d.global_utility);
+  EXPECT_NE(d.reason.find("no region's chance stands out"), std::string::npos) << d.reason;
+  EXPECT_EQ(choose(0.20, 0.30, 1.25).region, 6);   // 0.30 >= 1.25 x 0.20
+  // Alike regions (no semantics): the best gain / cost target's region even against the bonus.
+  q.regions[2] = state(6, {}, 3, 90, 10);
+  EXPECT_EQ(choose(0.2, 0.2, 0.0).region, 6);
+  EXPECT_EQ(choose(0.2, 0.2, 1.5).region, 5);
 }
 
 TEST(CoarseQuery, SerialisesTheDocumentedSchema) {

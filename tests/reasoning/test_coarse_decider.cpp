@@ -54,7 +54,8 @@ CoarseDecision decision(int region, std::string fault = "") {
 
 TEST(CoarseDecider, FaultsFallBackToUtilityAndAreCounted) {
   auto r = std::make_shared<ScriptedReasoner>();
-  r->decisions = {decision(7), decision(-1, "malformed"), decision(42, "unknown_region"), decision(7)};
+  r->decisions = {decision(7), decision(-1, "malformed"), decision(42, "unknown_region"), decision(3)};
+  r->decisions.back().global_utility = true;  // valid, but the reasoner's semantics did not decide
   ReasoningConfig cfg;
   Instruction I;
   I.text = "bed";
@@ -66,13 +67,15 @@ TEST(CoarseDecider, FaultsFallBackToUtilityAndAreCounted) {
   EXPECT_EQ(D.choose(in, cands), 7);
   EXPECT_EQ(D.choose(in, cands), -1);  // -1: the planner's global-utility choice
   EXPECT_EQ(D.choose(in, cands), -1);
-  EXPECT_EQ(D.choose(in, cands), 7);
+  EXPECT_EQ(D.choose(in, cands), 3);
   EXPECT_EQ(D.stats().decisions, 4);
   EXPECT_EQ(D.stats().fallbacks, 2);
+  EXPECT_EQ(D.stats().global_utility, 1);
   EXPECT_EQ(D.stats().faults.at("malformed"), 1);
   EXPECT_EQ(D.stats().faults.at("unknown_region"), 1);
   const nlohmann::json rep = D.report();
   EXPECT_EQ(rep["fallbacks"], 2);
+  EXPECT_EQ(rep["global_utility"], 1);
   EXPECT_EQ(rep["reasoner"], "scripted");
   // The query carried the candidates' frontiers.
   const RegionState* s7 = D.lastQuery().find(7);

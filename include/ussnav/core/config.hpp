@@ -393,6 +393,9 @@ struct ReasoningConfig {
   double label_min_interval_s = 2.0;  // a region is re-labelled at most this often (sim time), s
   int label_queue = 16;               // pending region-label requests; older ones are dropped
   double decision_min_interval_s = 0.0;  // coarse decisions at most this often; 0 = every re-plan
+  // builtin/oracle: act on a region's chance only when it is at least this many times the
+  // chance of the global-utility region (BuiltinReasoner::kMinChanceRatio); 0 = always
+  double min_chance_ratio = 1.5;
   LlmConfig llm;
   template <class V> void visit(V& v) {
     v.choice("reasoner", reasoner, {"builtin", "llm", "oracle"});
@@ -400,6 +403,7 @@ struct ReasoningConfig {
     v.field("label_min_interval_s", label_min_interval_s, 0.0, 1e4, "s");
     v.field("label_queue", label_queue, 1, 10000, "requests");
     v.field("decision_min_interval_s", decision_min_interval_s, 0.0, 1e4, "s");
+    v.field("min_chance_ratio", min_chance_ratio, 0.0, 100.0, "x");
     v.section("llm", llm);
   }
 };

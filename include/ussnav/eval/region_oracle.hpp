@@ -15,6 +15,7 @@
 #include <set>
 #include <vector>
 
+#include "ussnav/reasoning/builtin_reasoner.hpp"
 #include "ussnav/reasoning/reasoner.hpp"
 #include "ussnav/sim/world.hpp"
 
@@ -26,7 +27,9 @@ class OracleReasoner : public Reasoner {
 
   // `goal_rooms`: ids of the world's rooms that hold a goal instance; `labels` names regions.
   // `world` must outlive the reasoner (the episode's simulator holds it).
-  OracleReasoner(const World& world, std::set<int> goal_rooms, std::shared_ptr<Reasoner> labels);
+  // `min_chance_ratio`: chooseByChance's (reasoning.min_chance_ratio).
+  OracleReasoner(const World& world, std::set<int> goal_rooms, std::shared_ptr<Reasoner> labels,
+                 double min_chance_ratio = BuiltinReasoner::kMinChanceRatio);
   std::string name() const override { return "oracle"; }
   RegionSemantics labelRegion(const RegionSummary& region) override { return labels_->labelRegion(region); }
   CoarseDecision chooseRegion(const CoarseQuery& query) override;
@@ -40,6 +43,7 @@ class OracleReasoner : public Reasoner {
   const World& world_;
   std::set<int> goal_rooms_, next_to_goal_;
   std::shared_ptr<Reasoner> labels_;
+  double min_chance_ratio_;
   mutable std::mutex mutex_;
   std::map<int, int> room_of_region_;  // region id -> room id, -1 outside every room
 };

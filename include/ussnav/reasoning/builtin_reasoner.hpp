@@ -16,8 +16,12 @@
 //    for a bed, a kitchen does not);
 //  - the choice maximises (s + 0.02) * best_utility, the region's best target gain / cost (the
 //    frontier planner's own criterion), the region chosen last (else the current one) x 1.2
-//    while it has targets. Without any semantics every s is equal and this is the
-//    global-utility choice.
+//    while it has targets;
+//  - semantics too weak to act on (paper Sec. V-B: "the system reverts to a global utility
+//    maximization strategy"): unless that choice's chance is at least min_chance_ratio (1.5)
+//    times the chance of the region holding the best gain / cost target, that region is chosen
+//    instead (CoarseDecision::global_utility), so bare or alike regions are explored as the
+//    frontier planner would, commitment bonus and all chance noise aside.
 
 #include <functional>
 #include <memory>
@@ -28,7 +32,9 @@ namespace ussnav {
 
 class BuiltinReasoner : public Reasoner {
  public:
-  explicit BuiltinReasoner(std::shared_ptr<const CommonsensePriors> priors);
+  static constexpr double kMinChanceRatio = 1.5;  // reasoning.min_chance_ratio's default
+
+  explicit BuiltinReasoner(std::shared_ptr<const CommonsensePriors> priors, double min_chance_ratio = kMinChanceRatio);
   std::string name() const override { return "builtin"; }
   RegionSemantics labelRegion(const RegionSummary& region) override;
   CoarseDecision chooseRegion(const CoarseQuery& query) override;
@@ -40,12 +46,15 @@ class BuiltinReasoner : public Reasoner {
 
  private:
   std::shared_ptr<const CommonsensePriors> priors_;
+  double min_chance_ratio_;
 };
 
 // The decision rule above with any chance function s(region): max (s + 0.02) * best_utility,
-// the committed region x 1.2; fault "no_frontiers" when no region has a reachable target.
-// Shared with the evaluation's oracle (eval/region_oracle.hpp), so the two differ only in s.
-CoarseDecision chooseByChance(const CoarseQuery& q, const std::function<double(const RegionState&)>& chance);
+// the committed region x 1.2, then the global-utility region unless the choice's s is at least
+// min_chance_ratio times its s (0: never); fault "no_frontiers" when no region has a reachable
+// target. Shared with the evaluation's oracle (eval/region_oracle.hpp), so the two differ only in s.
+CoarseDecision chooseByChance(const CoarseQuery& q, const std::function<double(const RegionState&)>& chance,
+                              double min_chance_ratio = BuiltinReasoner::kMinChanceRatio);
 // s = (1 - f) s_self + f s_next with f = 0.5 * frontier gain / gain (s_self without frontiers).
 double blendChance(const RegionState& r, double s_self, double s_next);
 

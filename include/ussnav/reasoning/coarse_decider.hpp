@@ -36,6 +36,8 @@ class CoarseDecider {
     int kept = 0;                       // last decision kept (rate limit)
     int no_regions = 0;                 // no candidate in any region yet: utility, no question asked
     int fallbacks = 0;                  // faults answered by global utility
+    int global_utility = 0;             // valid replies that were the global-utility choice
+                                        // (chance-based reasoners: semantics too weak to act on)
     std::map<std::string, int> faults;  // by kind
     std::vector<double> latency_ms;
   };

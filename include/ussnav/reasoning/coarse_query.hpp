@@ -52,6 +52,8 @@ struct CoarseDecision {
   std::string reason;
   std::string fault;                // "" = valid; else malformed | unknown_region | no_frontiers | llm_<status>
   double latency_ms = 0.0;
+  bool global_utility = false;      // chance-based reasoners: the semantics did not tell the
+                                    // regions apart, so `region` is the global-utility choice
 };
 
 nlohmann::json toJson(const CoarseQuery& q);
