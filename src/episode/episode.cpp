@@ -18,6 +18,7 @@
 #include "ussnav/exploration/frontier.hpp"
 #include "ussnav/exploration/graph_costs.hpp"
 #include "ussnav/mapping/inflated_map.hpp"
+#include "ussnav/mapping/map_drawing.hpp"
 #include "ussnav/perception/oracle_detector.hpp"
 #include "ussnav/pipeline/mapper.hpp"
 #include "ussnav/reasoning/builtin_reasoner.hpp"
@@ -212,6 +213,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
   ApproachPose approach;
   double last_check = -1e9;
   int spins_left = -1;  // -1: not spinning; else yaw steps left before giving up
+  bool slice_printed = false;  // USSNAV_DEBUG_SLICE
   double t = 0.0;
   auto failObject = [&](int id) {
     failed_objects[id] = ++object_failures[id] >= kMaxObjectTries ? 1e18 : t + ep.blacklist_s;
@@ -279,6 +281,12 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
       const double ms = sw.ms();
       times.add("camera_coverage", ms);
       frame_ms += ms;
+    }
+    if (const char* ds = std::getenv("USSNAV_DEBUG_SLICE"); ds && t >= std::atof(ds) && !slice_printed) {
+      slice_printed = true;  // once, at the first frame at or after the time given
+      std::fprintf(stderr, "[t=%.1f] band slice at flight height, UAV at (%.2f %.2f); F: frontier columns\n%s", t,
+                   uav.pose().position.x(), uav.pose().position.y(),
+                   asciiSlice(mapper.grid(), mapper.coverage(), frontiers.frontierCells(), flight_z).c_str());
     }
     times.add("frame_update", frame_ms);
     ++R.frames;
@@ -413,8 +421,14 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
       if (need) {
         last_check = t;
         targets.clear();
+        const bool debug = std::getenv("USSNAV_DEBUG_EPISODE") != nullptr;
         for (const Frontier& fr : frontiers.frontiers()) {
-          if (blacklisted(fr.centroid)) continue;
+          if (blacklisted(fr.centroid)) {
+            if (debug)
+              std::fprintf(stderr, "  skip frontier (%.2f %.2f) %zu cells: blacklisted\n", fr.centroid.x(),
+                           fr.centroid.y(), fr.cells.size());
+            continue;
+          }
           ExplorationTarget tg;
           tg.kind = TargetKind::Frontier;
           tg.source_id = fr.id;
@@ -429,7 +443,13 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
             if (n < 0) continue;
             Viewpoint v;
             v.position = graph.node(n).center;
-            if ((v.position.head<2>() - fr.centroid.head<2>()).norm() > 3.0) continue;
+            if ((v.position.head<2>() - fr.centroid.head<2>()).norm() > 3.0) {
+              if (debug)
+                std::fprintf(stderr, "  skip frontier (%.2f %.2f) %zu cells: no viewpoint, nearest node %.1f m away\n",
+                             fr.centroid.x(), fr.centroid.y(), fr.cells.size(),
+                             (v.position.head<2>() - fr.centroid.head<2>()).norm());
+              continue;
+            }
             v.position.z() = flight_z;
             v.yaw = std::atan2(fr.centroid.y() - v.position.y(), fr.centroid.x() - v.position.x());
             v.gain = int(fr.cells.size() / 2);

@@ -54,7 +54,16 @@ bool FrontierFinder::isFrontierVoxel(const RollingGrid& grid, const CoverageMask
     unknown_next = true;
     break;
   }
-  return unknown_next && !gcm.isVisited(gcm.cellOfKey(key));
+  if (!unknown_next) return false;
+  if (!gcm.isVisited(gcm.cellOfKey(key))) return true;
+  if (!seen || !cfg.open_in_visited) return false;
+  // A visited cell still has a frontier where its free space meets, sideways, space never known
+  // (a room seen through a door: the cell is mostly known, the room beyond it is not).
+  for (int i = 0; i < 4; ++i) {
+    const Vec3i n = key + kSix[size_t(i)];
+    if (grid.state(n) == VoxelState::Unknown && !seen->known(n)) return true;
+  }
+  return false;
 }
 
 const Frontier* FrontierFinder::find(int id) const {
@@ -117,7 +126,7 @@ FrontierUpdate FrontierFinder::update(const RollingGrid& grid, const CoverageMas
   consumed_ = grid.changeSeqEnd();
   last_min_key_ = grid.minKey();
   initialised_ = true;
-  if (up.full_rescan || gcm.visitedCount() != last_visited_count_) dropVisited(gcm, up);
+  if (up.full_rescan || gcm.visitedCount() != last_visited_count_) dropVisited(grid, gcm, up);
   last_visited_count_ = gcm.visitedCount();
   recluster(grid, anchor_node, time, up);
   return up;
@@ -166,13 +175,14 @@ void FrontierFinder::scanBox(const RollingGrid& grid, const CoverageMask& gcm, V
       }
 }
 
-void FrontierFinder::dropVisited(const CoverageMask& gcm, FrontierUpdate& up) {
+void FrontierFinder::dropVisited(const RollingGrid& grid, const CoverageMask& gcm, FrontierUpdate& up) {
   std::unordered_map<uint64_t, bool> memo;
   for (auto it = cells_.begin(); it != cells_.end();) {
     const uint64_t c = pack(gcm.cellOfKey(unpack(it->first)));
     auto m = memo.find(c);
     if (m == memo.end()) m = memo.emplace(c, gcm.isVisited(unpack(c))).first;
-    if (m->second) {
+    if (m->second && !(cfg_.open_in_visited && cfg_.remember_known_band &&
+                       isFrontierVoxel(grid, gcm, unpack(it->first), cfg_, &seen_))) {
       markAffected(it->second);
       it = cells_.erase(it);
       ++up.cells_removed;

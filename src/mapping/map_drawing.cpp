@@ -1,6 +1,9 @@
 #include "ussnav/mapping/map_drawing.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <set>
+#include <utility>
 
 namespace ussnav {
 
@@ -33,6 +36,32 @@ void drawCoverageMask(Image& img, const TopDownView& view, const CoverageMask& m
     img.fillRect(int(p0.x()), int(p1.y()), int(p1.x()) - 1, int(p0.y()) - 1,
                  c.visited ? Rgb{120, 200, 120} : Rgb{200, 200, 200}, c.visited ? 0.30 : 0.15);
   }
+}
+
+std::string asciiSlice(const RollingGrid& grid, const CoverageMask& mask, const std::vector<Vec3i>& marked, double z) {
+  const int kz = int(std::floor(z / grid.resolution()));
+  std::set<std::pair<int, int>> columns;
+  for (const Vec3i& k : marked) columns.insert({k.x(), k.y()});
+  const Vec3i lo = grid.minKey(), hi = grid.minKey() + grid.dims() - Vec3i::Ones();
+  char head[160];
+  std::snprintf(head, sizeof head, "z-key %d, x-keys %d..%d (left to right), y-keys %d..%d (top to bottom), %.2f m voxels\n",
+                kz, lo.x(), hi.x(), hi.y(), lo.y(), grid.resolution());
+  std::string out = head;
+  for (int y = hi.y(); y >= lo.y(); --y) {
+    char row[16];
+    std::snprintf(row, sizeof row, "%5d|", y);
+    out += row;
+    for (int x = lo.x(); x <= hi.x(); ++x) {
+      const Vec3i k(x, y, kz);
+      const VoxelState s = grid.state(k);
+      const bool visited = mask.isVisited(mask.cellOfKey(k));
+      char c = s == VoxelState::Occupied ? '#' : s == VoxelState::Free ? (visited ? ',' : '.') : (visited ? 'u' : ' ');
+      if (columns.count({x, y})) c = 'F';
+      out += c;
+    }
+    out += "|\n";
+  }
+  return out;
 }
 
 }  // namespace ussnav

@@ -270,6 +270,8 @@ struct ExplorationConfig {
   double max_cluster_extent = 2.0;  // split a cluster (PCA) while longer than this along its axis, m
   bool remember_known_band = false; // true: free space cut off by the window's edge is a frontier
                                     // only where the voxel beyond was never known (BandMemory)
+  bool open_in_visited = false;     // with remember_known_band: a visited Coverage Mask cell still
+                                    // holds frontier voxels whose x-y neighbour was never known
   double viewpoint_height = 1.2;    // viewpoints at this z (flight height), m
   double viewpoint_r_min = 1.5;     // viewpoint rings around the centroid, m (FUEL)
   double viewpoint_r_max = 2.5;
@@ -300,6 +302,7 @@ struct ExplorationConfig {
     v.field("min_cluster_cells", min_cluster_cells, 1, 1000000, "cells");
     v.field("max_cluster_extent", max_cluster_extent, 0.2, 100.0, "m");
     v.field("remember_known_band", remember_known_band);
+    v.field("open_in_visited", open_in_visited);
     v.field("viewpoint_height", viewpoint_height, -100.0, 100.0, "m");
     v.field("viewpoint_r_min", viewpoint_r_min, 0.0, 20.0, "m");
     v.field("viewpoint_r_max", viewpoint_r_max, 0.0, 20.0, "m");

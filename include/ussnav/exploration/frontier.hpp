@@ -10,7 +10,9 @@
 // remember_known_band a neighbour outside the window counts as Unknown only if that voxel was
 // never known while in the window (BandMemory): looking back at space flown before,
 // the window's edge makes no frontier (cells cut by a wall are never visited, so the Coverage
-// Mask alone would let those flicker: there while away, gone when approached).
+// Mask alone would let those flicker: there while away, gone when approached). With
+// open_in_visited as well, a voxel in a visited cell is still a frontier where an x-y
+// neighbour was never known (a room seen through a door leaves its cells mostly known).
 // Connected cells (26-neighbours) of at least min_cluster_cells form clusters, split by PCA
 // while longer than max_cluster_extent; each has viewpoints (viewpoint.hpp, computed when the
 // cluster is made) and the connectivity-graph node given when it was made. Cells that leave
@@ -85,7 +87,7 @@ class FrontierFinder {
 
  private:
   void scanBox(const RollingGrid& grid, const CoverageMask& gcm, Vec3i lo, Vec3i hi, FrontierUpdate& up);
-  void dropVisited(const CoverageMask& gcm, FrontierUpdate& up);
+  void dropVisited(const RollingGrid& grid, const CoverageMask& gcm, FrontierUpdate& up);
   void recluster(const RollingGrid& grid, int anchor_node, double time, FrontierUpdate& up);
   void splitCluster(std::vector<Vec3i>& cells, double res, std::vector<std::vector<Vec3i>>& out) const;
   void markAffected(int owner);
