@@ -213,7 +213,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
   ApproachPose approach;
   double last_check = -1e9;
   int spins_left = -1;  // -1: not spinning; else yaw steps left before giving up
-  bool slice_printed = false;  // USSNAV_DEBUG_SLICE
+  const char* slice_at = std::getenv("USSNAV_DEBUG_SLICE");  // print the band once, at this time
   double t = 0.0;
   auto failObject = [&](int id) {
     failed_objects[id] = ++object_failures[id] >= kMaxObjectTries ? 1e18 : t + ep.blacklist_s;
@@ -282,8 +282,8 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
       times.add("camera_coverage", ms);
       frame_ms += ms;
     }
-    if (const char* ds = std::getenv("USSNAV_DEBUG_SLICE"); ds && t >= std::atof(ds) && !slice_printed) {
-      slice_printed = true;  // once, at the first frame at or after the time given
+    if (slice_at && t >= std::atof(slice_at)) {
+      slice_at = nullptr;  // once, at the first frame at or after the time given
       std::fprintf(stderr, "[t=%.1f] band slice at flight height, UAV at (%.2f %.2f); F: frontier columns\n%s", t,
                    uav.pose().position.x(), uav.pose().position.y(),
                    asciiSlice(mapper.grid(), mapper.coverage(), frontiers.frontierCells(), flight_z).c_str());

@@ -181,8 +181,9 @@ void FrontierFinder::dropVisited(const RollingGrid& grid, const CoverageMask& gc
     const uint64_t c = pack(gcm.cellOfKey(unpack(it->first)));
     auto m = memo.find(c);
     if (m == memo.end()) m = memo.emplace(c, gcm.isVisited(unpack(c))).first;
-    if (m->second && !(cfg_.open_in_visited && cfg_.remember_known_band &&
-                       isFrontierVoxel(grid, gcm, unpack(it->first), cfg_, &seen_))) {
+    // open_in_visited keeps some cells of visited cells: those are judged again.
+    if (m->second && !(cfg_.open_in_visited && isFrontierVoxel(grid, gcm, unpack(it->first), cfg_,
+                                                               cfg_.remember_known_band ? &seen_ : nullptr))) {
       markAffected(it->second);
       it = cells_.erase(it);
       ++up.cells_removed;
