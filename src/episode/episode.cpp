@@ -202,6 +202,14 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
 
   Goal g;
   std::vector<Blacklisted> blacklist;
+  // close_look: frontiers reached once but still open (centroid, where the UAV was), next tried
+  // from the graph node nearest to them.
+  std::vector<std::pair<Vec3, Vec3>> looked;
+  auto lookedFrom = [&](const Vec3& c) -> const Vec3* {
+    for (const auto& [centroid, from] : looked)
+      if ((centroid - c).norm() < 0.75) return &from;
+    return nullptr;
+  };
   std::map<int, double> failed_objects;  // object id -> retry time
   std::map<int, int> object_failures;     // object id -> failed approaches (kMaxObjectTries: dropped)
   std::map<int, int> object_transits;     // object id -> transit flights towards it
@@ -392,10 +400,16 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
         if (need && (uav.pose().position - g.vp.position).norm() <= ep.goal_tolerance) {
           // Reached the viewpoint: whatever is left of its target is not visible from here.
           if (g.kind == TargetKind::Unseen) camera.abandon(g.patch_cells);
-          blacklist.push_back({g.centroid, 1e18});
+          const bool second = ep.close_look && g.kind == TargetKind::Frontier && !lookedFrom(g.centroid);
+          if (second) {
+            looked.emplace_back(g.centroid, uav.pose().position);
+            ++R.close_looks;
+          } else {
+            blacklist.push_back({g.centroid, 1e18});
+          }
           if (std::getenv("USSNAV_DEBUG_EPISODE"))
-            std::fprintf(stderr, "[t=%.1f] reached but %s target still open (%.2f %.2f %.2f)\n", t, toString(g.kind),
-                         g.centroid.x(), g.centroid.y(), g.centroid.z());
+            std::fprintf(stderr, "[t=%.1f] reached but %s target still open (%.2f %.2f %.2f)%s\n", t, toString(g.kind),
+                         g.centroid.x(), g.centroid.y(), g.centroid.z(), second ? ": a closer look next" : "");
         }
       }
       if (g.active && !need && t - last_check >= ep.replan_period_s) {
@@ -434,6 +448,23 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
           tg.source_id = fr.id;
           tg.centroid = fr.centroid;
           tg.viewpoints = fr.viewpoints;
+          if (const Vec3* from = ep.close_look ? lookedFrom(fr.centroid) : nullptr) {
+            // Reached once and still open (a room seen through its door): the graph node nearest
+            // to it, if that is somewhere else than where the UAV looked from.
+            tg.viewpoints.clear();
+            const int n = graph.size() > 0 ? graph.nearestNode(fr.centroid) : -1;
+            if (n < 0) continue;
+            Viewpoint v;
+            v.position = graph.node(n).center;
+            v.position.z() = flight_z;
+            if ((v.position.head<2>() - from->head<2>()).norm() < 0.5) {
+              blacklist.push_back({fr.centroid, 1e18});
+              continue;
+            }
+            v.yaw = std::atan2(fr.centroid.y() - v.position.y(), fr.centroid.x() - v.position.x());
+            v.gain = int(fr.cells.size());
+            tg.viewpoints.push_back(v);
+          }
           if (tg.viewpoints.empty()) {
             // Viewpoints are computed while the frontier is in the rolling window; one found
             // at the window's edge may have none. Fly to the graph node nearest to it (within

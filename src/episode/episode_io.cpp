@@ -32,6 +32,7 @@ nlohmann::json toJson(const EpisodeResult& r) {
   j["split"] = r.multi_room ? "multi_room" : "single_room";
   j["replans"] = r.replans;
   j["unreachable_targets"] = r.unreachable;
+  j["close_looks"] = r.close_looks;
   j["update_hz"] = r.update_hz;
   j["stage_ms"] = r.stage_ms;
   j["reasoning"] = r.reasoning;

@@ -57,6 +57,8 @@ bool FrontierFinder::isFrontierVoxel(const RollingGrid& grid, const CoverageMask
   if (!unknown_next) return false;
   if (!gcm.isVisited(gcm.cellOfKey(key))) return true;
   if (!seen || !cfg.open_in_visited) return false;
+  const double zc = grid.centerOf(key).z();
+  if (zc < cfg.viewpoint_height - 1e-9 || zc > cfg.viewpoint_height + cfg.open_in_visited_above + 1e-9) return false;
   // A visited cell still has a frontier where its free space meets, sideways, space never known
   // (a room seen through a door: the cell is mostly known, the room beyond it is not).
   for (int i = 0; i < 4; ++i) {

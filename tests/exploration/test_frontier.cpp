@@ -68,6 +68,7 @@ bool bruteFrontier(const RollingGrid& g, const CoverageMask& gcm, const Vec3i& k
   // open_in_visited, for a window that never moved (so Unknown means never known): an Unknown
   // neighbour in x or y keeps it a frontier.
   if (!cfg.remember_known_band || !cfg.open_in_visited) return false;
+  if (zc < cfg.viewpoint_height - 1e-9 || zc > cfg.viewpoint_height + cfg.open_in_visited_above + 1e-9) return false;
   for (const Vec3i& d : {Vec3i(1, 0, 0), Vec3i(-1, 0, 0), Vec3i(0, 1, 0), Vec3i(0, -1, 0)})
     if (g.state(k + d) == VoxelState::Unknown) return true;
   return false;
@@ -333,26 +334,31 @@ TEST(Frontier, RoomSeenThroughADoorKeepsItsFrontiersInVisitedCells) {
   add(-1.2, 8.0, 0.0, 11.2, 8.2, 2.7);
   add(-1.0, 2.0, 0.0, 2.0, 2.2, 2.7);     // the dividing wall, a door at x in [2, 3]
   add(3.0, 2.0, 0.0, 11.0, 2.2, 2.7);
-  auto look = [&](bool open) {
+  auto look = [&](bool open, double above) {
     ExplorationConfig cfg;
     cfg.remember_known_band = true;
     cfg.open_in_visited = open;
+    cfg.open_in_visited_above = above;
     // The window stays put (centred on the door's first-room side), so Unknown means never known.
     auto d = std::make_unique<Driver>(cfg, Vec3(2.5, 1.0, 1.2));
     for (double x = 0.0; x <= 5.01; x += 0.5) {  // a Mid-360-like LiDAR flown along the wall
       d->grid.insertScan(test::renderScan(s, Vec3(x, 1.0, 1.2), 20000, -7.0, 52.0, 40.0));
       d->finish(0);
     }
-    int beyond = 0, in_visited = 0;
+    int beyond = 0, in_visited = 0, off_height = 0;
     for (const Vec3i& k : d->finder.frontierCells()) {
       if (d->grid.centerOf(k).y() < 2.3) continue;
       ++beyond;
-      in_visited += d->gcm.isVisited(d->gcm.cellOfKey(k));
+      const bool visited = d->gcm.isVisited(d->gcm.cellOfKey(k));
+      in_visited += visited;
+      const double z = d->grid.centerOf(k).z();
+      off_height += visited && (z < cfg.viewpoint_height - 1e-9 || z > cfg.viewpoint_height + above + 1e-9);
     }
     int beyond_frontiers = 0;
     for (const Frontier& f : d->finder.frontiers()) beyond_frontiers += f.centroid.y() > 2.3;
-    std::printf("[ open_in_visited %d ] beyond the door: %d frontier cells (%d in visited cells), %d frontiers\n", open,
-                beyond, in_visited, beyond_frontiers);
+    std::printf("[ open_in_visited %d, above %.2f ] beyond the door: %d frontier cells (%d in visited cells), %d frontiers\n",
+                open, above, beyond, in_visited, beyond_frontiers);
+    EXPECT_EQ(off_height, 0) << "visited cells keep frontier voxels only from flight height to `above` over it";
     if (open) {
       EXPECT_GT(in_visited, 20);
       EXPECT_GE(beyond_frontiers, 2) << "both sides of the wedge";
@@ -360,10 +366,13 @@ TEST(Frontier, RoomSeenThroughADoorKeepsItsFrontiersInVisitedCells) {
       EXPECT_EQ(in_visited, 0);
     }
     expectCellsMatchBruteForce(*d, cfg, open ? "through a door, open_in_visited" : "through a door");
-    return beyond;
+    return in_visited;
   };
-  const int closed = look(false);
-  EXPECT_GT(look(true), closed);
+  EXPECT_EQ(look(false, 100.0), 0);
+  const int all = look(true, 100.0);
+  const int near = look(true, 0.25);  // layers 1.25-1.45 m of 0.3-2.1 m
+  EXPECT_GT(near, 20);
+  EXPECT_LT(near, all);
 }
 
 TEST(Frontier, RejectsEmptyBand) {

@@ -272,6 +272,9 @@ struct ExplorationConfig {
                                     // only where the voxel beyond was never known (BandMemory)
   bool open_in_visited = false;     // with remember_known_band: a visited Coverage Mask cell still
                                     // holds frontier voxels whose x-y neighbour was never known
+  double open_in_visited_above = 100.0; // ... only voxels whose centre is at viewpoint_height or
+                                    // at most this far above it, m: below the sensor the LiDAR
+                                    // (-7 deg) leaves a never-known disc around the UAV
   double viewpoint_height = 1.2;    // viewpoints at this z (flight height), m
   double viewpoint_r_min = 1.5;     // viewpoint rings around the centroid, m (FUEL)
   double viewpoint_r_max = 2.5;
@@ -303,6 +306,7 @@ struct ExplorationConfig {
     v.field("max_cluster_extent", max_cluster_extent, 0.2, 100.0, "m");
     v.field("remember_known_band", remember_known_band);
     v.field("open_in_visited", open_in_visited);
+    v.field("open_in_visited_above", open_in_visited_above, 0.0, 100.0, "m");
     v.field("viewpoint_height", viewpoint_height, -100.0, 100.0, "m");
     v.field("viewpoint_r_min", viewpoint_r_min, 0.0, 20.0, "m");
     v.field("viewpoint_r_max", viewpoint_r_max, 0.0, 20.0, "m");
@@ -343,6 +347,8 @@ struct EpisodeConfig {
   double clearance = 0.4;             // flight paths keep this from mapped obstacles, m
   bool fuse_depth = true;             // the depth camera feeds the grid too (LiDAR blind cone)
   bool end_on_collision = true;       // a collision ends the episode as a failure (DESIGN.md)
+  bool close_look = false;            // a frontier still open at its reached viewpoint gets one more
+                                      // try from the graph node nearest to it before it is dropped
   template <class V> void visit(V& v) {
     v.field("max_time_s", max_time_s, 1.0, 1e6, "s");
     v.field("max_distance_m", max_distance_m, 0.0, 1e6, "m");
@@ -359,6 +365,7 @@ struct EpisodeConfig {
     v.field("clearance", clearance, 0.0, 5.0, "m");
     v.field("fuse_depth", fuse_depth);
     v.field("end_on_collision", end_on_collision);
+    v.field("close_look", close_look);
   }
 };
 

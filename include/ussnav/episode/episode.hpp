@@ -68,6 +68,7 @@ struct EpisodeResult {
   int goal_instances = 0;          // ground truth
   bool multi_room = false;         // no goal instance in the start room
   int replans = 0, unreachable = 0;
+  int close_looks = 0;  // frontiers reached but still open, tried again from nearer (episode.close_look)
   double update_hz = 0.0;          // 1000 / median per-frame scene-graph update (ms)
   nlohmann::json stage_ms;         // {stage: {median, p95, count}}
   std::vector<CoverageSample> coverage;  // every 5 s
