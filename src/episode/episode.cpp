@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <map>
+#include <optional>
 
 #include "ussnav/core/error.hpp"
 #include "ussnav/core/timing.hpp"
@@ -209,6 +210,18 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
     for (const auto& [centroid, from] : looked)
       if ((centroid - c).norm() < 0.75) return &from;
     return nullptr;
+  };
+  // A viewpoint at the graph node nearest to c, at flight height, facing c (none on an empty graph).
+  auto nodeFacing = [&](const Vec3& c, int gain) -> std::optional<Viewpoint> {
+    const ConnectivityGraph& graph = mapper.graph();
+    const int n = graph.size() > 0 ? graph.nearestNode(c) : -1;
+    if (n < 0) return std::nullopt;
+    Viewpoint v;
+    v.position = graph.node(n).center;
+    v.position.z() = flight_z;
+    v.yaw = std::atan2(c.y() - v.position.y(), c.x() - v.position.x());
+    v.gain = gain;
+    return v;
   };
   std::map<int, double> failed_objects;  // object id -> retry time
   std::map<int, int> object_failures;     // object id -> failed approaches (kMaxObjectTries: dropped)
@@ -452,39 +465,29 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
             // Reached once and still open (a room seen through its door): the graph node nearest
             // to it, if that is somewhere else than where the UAV looked from.
             tg.viewpoints.clear();
-            const int n = graph.size() > 0 ? graph.nearestNode(fr.centroid) : -1;
-            if (n < 0) continue;
-            Viewpoint v;
-            v.position = graph.node(n).center;
-            v.position.z() = flight_z;
-            if ((v.position.head<2>() - from->head<2>()).norm() < 0.5) {
+            const std::optional<Viewpoint> v = nodeFacing(fr.centroid, int(fr.cells.size()));
+            if (!v) continue;
+            if ((v->position.head<2>() - from->head<2>()).norm() < 0.5) {
               blacklist.push_back({fr.centroid, 1e18});
               continue;
             }
-            v.yaw = std::atan2(fr.centroid.y() - v.position.y(), fr.centroid.x() - v.position.x());
-            v.gain = int(fr.cells.size());
-            tg.viewpoints.push_back(v);
+            tg.viewpoints.push_back(*v);
           }
           if (tg.viewpoints.empty()) {
             // Viewpoints are computed while the frontier is in the rolling window; one found
             // at the window's edge may have none. Fly to the graph node nearest to it (within
             // 3 m), facing it, at half its cell count: there the window covers it again and
             // its viewpoints are recomputed when its cells change (or it is skipped as reached).
-            const int n = graph.size() > 0 ? graph.nearestNode(fr.centroid) : -1;
-            if (n < 0) continue;
-            Viewpoint v;
-            v.position = graph.node(n).center;
-            if ((v.position.head<2>() - fr.centroid.head<2>()).norm() > 3.0) {
+            const std::optional<Viewpoint> v = nodeFacing(fr.centroid, int(fr.cells.size() / 2));
+            if (!v) continue;
+            const double away = (v->position.head<2>() - fr.centroid.head<2>()).norm();
+            if (away > 3.0) {
               if (debug)
                 std::fprintf(stderr, "  skip frontier (%.2f %.2f) %zu cells: no viewpoint, nearest node %.1f m away\n",
-                             fr.centroid.x(), fr.centroid.y(), fr.cells.size(),
-                             (v.position.head<2>() - fr.centroid.head<2>()).norm());
+                             fr.centroid.x(), fr.centroid.y(), fr.cells.size(), away);
               continue;
             }
-            v.position.z() = flight_z;
-            v.yaw = std::atan2(fr.centroid.y() - v.position.y(), fr.centroid.x() - v.position.x());
-            v.gain = int(fr.cells.size() / 2);
-            tg.viewpoints.push_back(v);
+            tg.viewpoints.push_back(*v);
           }
           tg.gain = tg.viewpoints.front().gain * 1.0;
           targets.push_back(std::move(tg));
