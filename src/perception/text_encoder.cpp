@@ -104,7 +104,11 @@ Embedding WordNetTextEncoder::encodeUncached(const std::string& label) const {
   Embedding v = synsetVector(r->sense);
   for (const auto& m : r->modifiers) {
     auto ms = wordnet::lookupNoun(m);
-    v += float(modifier_weight_) * (ms ? synsetVector(*ms) : ngramEmbedding(m, dim_));
+    // An animal before the head noun says whom the object is for ("dog bed", "cat tree"): not
+    // the thing a person asking for a bed wants (ProcTHOR keeps DogBed apart from Bed too), so
+    // it weighs as much as the head. Other modifiers only nudge ("office chair" is a chair).
+    const double w = wordnet::namesAnimal(m) ? 1.0 : modifier_weight_;
+    v += float(w) * (ms ? synsetVector(*ms) : ngramEmbedding(m, dim_));
   }
   return normalised(std::move(v));
 }

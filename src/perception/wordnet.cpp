@@ -357,6 +357,21 @@ std::optional<Sense> lookupNoun(const std::string& word) {
   return withDb([&](Db& db) { return lookupNounLocked(db, word); }, std::optional<Sense>{});
 }
 
+bool namesAnimal(const std::string& word) {
+  return withDb(
+      [&](Db& db) {
+        std::string w = lower(word);
+        std::vector<long> offs = db.senses(w);
+        if (offs.empty())
+          for (const auto& base : db.baseForms(w))
+            if (offs = db.senses(base); !offs.empty()) break;
+        if (offs.empty()) return false;
+        const SynsetData& d = db.synset(offs.front());  // the most frequent sense
+        return d.fnum >= 0 && d.fnum < MAXFNUM && lexfiles[d.fnum] && std::string(lexfiles[d.fnum]) == "noun.animal";
+      },
+      false);
+}
+
 std::optional<Sense> lookupLabel(const std::string& label) {
   return withDb(
       [&](Db& db) -> std::optional<Sense> {

@@ -1,10 +1,12 @@
 #include <gtest/gtest.h>
 
+#include "support/paths.hpp"
 #include "support/test_worlds.hpp"
 #include "ussnav/core/config.hpp"
 #include "ussnav/core/error.hpp"
 #include "ussnav/episode/goal.hpp"
 #include "ussnav/perception/text_encoder.hpp"
+#include "ussnav/sim/importers/procthor.hpp"
 
 using namespace ussnav;
 
@@ -17,6 +19,8 @@ TEST(Goal, SynonymsMatchAndOtherCategoriesDoNot) {
   EXPECT_FALSE(sofa.matches("chair"));
   const GoalMatcher bed("bed", enc, 0.85);
   EXPECT_FALSE(bed.matches("bedside table"));
+  EXPECT_TRUE(bed.matches("guest bed"));
+  EXPECT_FALSE(bed.matches("dog bed"));  // ProcTHOR's DogBed is not a Bed
   EXPECT_THROW(GoalMatcher("", enc, 0.85), InputError);
 }
 
@@ -28,4 +32,17 @@ TEST(Goal, InstancesInTheWorld) {
   const auto inst = goalInstances(w, GoalMatcher("sofa", enc, 0.85));
   ASSERT_EQ(inst.size(), 1u);
   EXPECT_EQ(inst[0]->category, "couch");
+}
+
+TEST(Goal, ADogBedIsNotABedInARealHouse) {
+  // ProcTHOR house_7 (default suite) has one bed and one dog bed: only the bed is a goal
+  // instance, so neither the shortest path nor success can come from the dog bed.
+  const World w = importProcthorHouse(test::sharedData() / "procthor_houses" / "houses" / "house_7.json");
+  const std::shared_ptr<const TextEncoder> enc(makeTextEncoder(defaultConfig().perception));
+  int dog_beds = 0;
+  for (const Object& o : w.objects) dog_beds += o.category == "dog bed";
+  ASSERT_EQ(dog_beds, 1);
+  const auto inst = goalInstances(w, GoalMatcher("bed", enc, defaultConfig().episode.goal_similarity));
+  ASSERT_EQ(inst.size(), 1u);
+  EXPECT_EQ(inst[0]->category, "bed");
 }

@@ -60,6 +60,11 @@ TEST(WordNet, MultiWordLabels) {
   ASSERT_TRUE(office);
   EXPECT_EQ(office->sense.offset, wordnet::lookupNoun("chair")->offset);  // head noun
   EXPECT_EQ(office->modifiers, std::vector<std::string>{"office"});
+  EXPECT_TRUE(wordnet::namesAnimal("dog"));  // though lookupNoun("dog") is the andiron
+  EXPECT_TRUE(wordnet::namesAnimal("cats"));
+  EXPECT_FALSE(wordnet::namesAnimal("guest"));
+  EXPECT_FALSE(wordnet::namesAnimal("office"));
+  EXPECT_FALSE(wordnet::namesAnimal("zorblax"));
 }
 
 TEST(WordNetEncoder, SynonymsCoincide) {
@@ -84,6 +89,11 @@ TEST(WordNetEncoder, TaxonomyOrdersSimilarity) {
   // A modifier nudges but does not change the object type.
   EXPECT_GT(cos(e, "office chair", "chair"), 0.9);
   EXPECT_LT(cos(e, "office chair", "chair"), 0.999);
+  // ...unless it names an animal the object is for: a dog bed is no answer to "find a bed"
+  // (below the default goal_similarity 0.85), though still nearer to a bed than a sofa is.
+  EXPECT_LT(cos(e, "dog bed", "bed"), 0.85);
+  EXPECT_GT(cos(e, "dog bed", "bed"), cos(e, "sofa", "bed"));
+  EXPECT_GT(cos(e, "guest bed", "bed"), 0.9);  // a person's bed stays a bed
 }
 
 TEST(WordNetEncoder, UnitVectorsOfConfiguredSizeAndDeterministic) {

@@ -63,7 +63,8 @@ class WordNetTextEncoder : public TextEncoder {
  public:
   // depth_ratio: squared weight ratio between a synset and its hypernym one level up (> 1
   // emphasises the specific end of the chain). modifier_weight: weight of each word before the
-  // head noun when the compound is not in WordNet ("office chair" = chair + 0.3 office).
+  // head noun when the compound is not in WordNet ("office chair" = chair + 0.3 office); a
+  // modifier that names an animal weighs 1 ("dog bed" = bed + dog: not a bed to a person).
   explicit WordNetTextEncoder(int dim = 512, double depth_ratio = 1.6, double modifier_weight = 0.3);
   Embedding encode(const std::string& label) const override;
   int dim() const override { return dim_; }

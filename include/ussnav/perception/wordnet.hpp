@@ -47,6 +47,9 @@ bool reopen(const std::filesystem::path& dir);
 // ("kitchen"), (4) anything else. Senses that are only a proper name ("Monitor", a ship) come
 // last. nullopt when the word is not a WordNet noun.
 std::optional<Sense> lookupNoun(const std::string& word);
+// True when the word's most frequent noun sense is an animal ("dog", "cats", "pet"; not "guest"
+// or "office"), whatever sense lookupNoun() prefers indoors (it reads "dog" as an andiron).
+bool namesAnimal(const std::string& word);
 // The sense of a free-form object label: lower-cased, CamelCase and '_'/'-' split into words;
 // the whole compound is tried first ("dining table" -> dining_table, "ArmChair" -> armchair),
 // then the last word (the head noun: "office chair" -> chair). nullopt when none is known.
