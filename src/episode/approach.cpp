@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace ussnav {
 
@@ -16,14 +17,11 @@ std::vector<ApproachPose> approachPoses(const OccupancyMap& map, const GraphDist
   if (box.empty()) return out;
   const EpisodeConfig& ep = cfg.episode;
   const double reach = ep.found_radius - ep.found_margin;
-  // The flight paths' clearance, or the narrower fallback when no pose keeps it (small rooms).
-  for (const double clearance : {ep.clearance, cfg.sim.uav.radius + 0.1}) {
   const double half_v = deg2rad(0.5 * cfg.sim.camera.vfov_deg - 5.0);
   const Vec3 c = box.center();
   const Vec3 half = 0.5 * box.size();
-  for (double dz : {0.0, -0.3, -0.6}) {
-    const double z = flight_z + dz;
-    if (z < clearance + 0.2) continue;
+  auto collect = [&](double z, double clearance) {
+    if (z < clearance + 0.2) return;
     for (int a = 0; a < 24; ++a) {
       const double phi = a * 2.0 * kPi / 24.0;
       const Vec2 dir(std::cos(phi), std::sin(phi));
@@ -47,7 +45,16 @@ std::vector<ApproachPose> approachPoses(const OccupancyMap& map, const GraphDist
         out.push_back(ApproachPose{p, std::atan2(to.y(), to.x()), cost});
       }
     }
-  }
+  };
+  // At flight height or lower first; above it only for what no such pose sees (a TV hung high
+  // on a wall). Within each, the flight paths' clearance, then the narrower fallback when no
+  // pose keeps it (small rooms).
+  const std::vector<double> at_or_below = {0.0, -0.3, -0.6}, above = {kApproachAbove};
+  for (const std::vector<double>* dzs : {&at_or_below, &above}) {
+    for (const double clearance : {ep.clearance, cfg.sim.uav.radius + 0.1}) {
+      for (const double dz : *dzs) collect(flight_z + dz, clearance);
+      if (!out.empty()) break;
+    }
     if (!out.empty()) break;
   }
   std::stable_sort(out.begin(), out.end(), [](const ApproachPose& a, const ApproachPose& b) { return a.cost_m < b.cost_m; });

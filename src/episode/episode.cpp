@@ -49,12 +49,13 @@ GroundTruthGoal evaluateGoal(const Simulator& sim, const GoalMatcher& goal, cons
   if (g.instances.empty()) return g;
   const GtPlanner& planner = sim.planner();
   // Success poses: free cells within found_radius of a goal instance's box (approach poses may
-  // sink up to 0.6 m below flight height, approach.hpp) from which the instance is in sight.
+  // sink up to 0.6 m below flight height or rise kApproachAbove above it, approach.hpp) from
+  // which the instance is in sight.
   const GroundTruthGrid& gt = sim.groundTruth();
   std::vector<Vec2> goals;
   for (const Vec2& p : planner.freeSamples(2))
     for (const Object* o : g.instances) {
-      const Vec3 q(p.x(), p.y(), std::clamp(o->box.center.z(), planner.flightZ() - 0.6, planner.flightZ()));
+      const Vec3 q(p.x(), p.y(), std::clamp(o->box.center.z(), planner.flightZ() - 0.6, planner.flightZ() + kApproachAbove));
       if (o->box.distance(q) > found_radius) continue;
       const Vec3 to = o->box.center - q;
       const GroundTruthGrid::Hit hit = gt.raycast(q, to.normalized(), to.norm() + 0.1);
@@ -183,7 +184,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
   fopt.z_min = std::max(cfg.sim.uav.radius + 0.25, flight_z - 0.7);
   fopt.z_max = flight_z + 0.8;
   fopt.waypoint_z_min = flight_z - 0.3;
-  fopt.waypoint_z_max = flight_z + 0.3;
+  fopt.waypoint_z_max = flight_z + kApproachAbove;
   // The margin of the last path flightPath found, and of the path being flown: the blocked-path
   // checks use it, so a path planned through a narrow door is not dropped as blocked at once.
   double last_clearance = fopt.clearance, path_clearance = fopt.clearance;

@@ -1,7 +1,8 @@
 #pragma once
 // Where to stand to declare a found object (DESIGN.md: within found_radius of the object's box,
 // with it in view). Candidates around the mapped object's box — 24 directions, horizontal gaps
-// of 0.2..0.8 m from the box side, at flight height and up to 0.6 m lower — are kept when the
+// of 0.2..0.8 m from the box side, at flight height and up to 0.6 m lower, or, only when none of
+// those qualifies, kApproachAbove higher (a TV hung high on a wall) — are kept when the
 // 3-D distance to the box is at most found_radius - found_margin, the pose is clear of
 // obstacles and unknown space by episode.clearance in the map (UAV radius + 0.1 m when no pose
 // keeps that), the box centre is inside
@@ -22,6 +23,9 @@ struct ApproachPose {
   double yaw = 0.0;
   double cost_m = 0.0;  // graph distance from the UAV
 };
+
+// How far above flight height an approach pose may rise (the flight paths' waypoint band), m.
+inline constexpr double kApproachAbove = 0.3;
 
 // Distance from p to an axis-aligned box (0 inside).
 double distanceToBox(const Aabb& box, const Vec3& p);

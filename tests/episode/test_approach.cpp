@@ -1,0 +1,97 @@
+// approachPoses on a mapped room: poses keep their contract (within reach of the box, clear of
+// obstacles, the box centre in the camera's vertical field of view), stay at or below flight
+// height when that works, and rise above it only for an object hung too high to see from there.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "support/mapping_scenes.hpp"
+#include "ussnav/core/config.hpp"
+#include "ussnav/episode/approach.hpp"
+#include "ussnav/exploration/graph_costs.hpp"
+#include "ussnav/mapping/rolling_grid.hpp"
+#include "ussnav/skeleton/connectivity_graph.hpp"
+
+using namespace ussnav;
+
+namespace {
+
+constexpr double kFlightZ = 1.2;
+
+struct MappedRoom {
+  test::BoxScene scene;
+  RollingGrid grid;
+  ConnectivityGraph graph;
+  double t = 0.0;
+  explicit MappedRoom(test::BoxScene s) : scene(std::move(s)), grid(GridConfig{}, Vec3(3, 2, kFlightZ)) {
+    // Spin at three points of the room so every wall is seen by the depth camera.
+    for (const Vec3& p : {Vec3(3, 2, kFlightZ), Vec3(1.5, 2, kFlightZ), Vec3(4.5, 2, kFlightZ)})
+      for (int k = 0; k < 16; ++k) frame(p, k * kPi / 8.0);
+  }
+  void frame(const Vec3& p, double yaw) {
+    grid.moveTo(p);
+    grid.insertScan(test::renderScan(scene, p, 20000, -52.0, 52.0, 40.0));
+    grid.insertDepth(test::renderDepth(scene, Intrinsics::fromFov(80, 60, deg2rad(87), deg2rad(58)),
+                                       test::cameraPose(p, yaw), 6.0));
+    std::vector<Vec3i> occ;
+    for (const VoxelChange& c : grid.changes())
+      if (c.after == VoxelState::Occupied) occ.push_back(c.key);
+    graph.update(grid, p, t, occ);
+    grid.clearChanges();
+    t += 0.1;
+  }
+};
+
+// Every pose keeps the documented contract.
+void expectContract(const std::vector<ApproachPose>& poses, const OccupancyMap& map, const Aabb& box,
+                    const Config& cfg) {
+  const double reach = cfg.episode.found_radius - cfg.episode.found_margin;
+  const double half_v = deg2rad(0.5 * cfg.sim.camera.vfov_deg - 5.0);
+  for (const ApproachPose& p : poses) {
+    EXPECT_LE(distanceToBox(box, p.position), reach + 1e-9);
+    EXPECT_TRUE(isSafe(map, p.position, cfg.sim.uav.radius + 0.1, true));
+    const Vec3 to = box.center() - p.position;
+    const double zt = std::clamp(p.position.z(), box.min.z(), box.max.z());
+    EXPECT_LE(std::atan2(std::abs(p.position.z() - zt), to.head<2>().norm()), half_v + 1e-9);
+    EXPECT_NEAR(p.yaw, std::atan2(to.y(), to.x()), 1e-9);
+  }
+}
+
+}  // namespace
+
+TEST(Approach, HighOnAWallOnlyFromAboveFlightHeight) {
+  // A 6 x 4 x 2.8 m room; a TV-sized box (1.1 x 0.07 x 0.74 m) hung with its bottom at 1.71 m
+  // on the wall y = 4, and a low box (a table) in the middle of the floor.
+  const Vec3 lo(0, 0, 0), hi(6, 4, 2.8);
+  test::BoxScene scene = test::boxRoom(lo, hi, 0.2, false);
+  const Aabb tv(Vec3(2.45, 3.93, 1.71), Vec3(3.55, 4.0, 2.45));
+  const Aabb table(Vec3(2.6, 1.6, 0.0), Vec3(3.4, 2.0, 0.75));
+  scene.solids.push_back(tv);
+  scene.solids.push_back(table);
+  MappedRoom room(std::move(scene));
+  const Config cfg = defaultConfig();
+  ASSERT_GT(room.graph.size(), 0);
+  const GraphDistances gd(room.graph, room.grid, Vec3(3, 2, kFlightZ));
+
+  const std::vector<ApproachPose> at_tv = approachPoses(room.grid, gd, tv, kFlightZ, cfg);
+  ASSERT_FALSE(at_tv.empty());
+  expectContract(at_tv, room.grid, tv, cfg);
+  for (const ApproachPose& p : at_tv) EXPECT_NEAR(p.position.z(), kFlightZ + kApproachAbove, 1e-9);
+
+  // Hung 0.3 m lower (bottom at 1.41 m) it is seen from flight height: nothing rises.
+  const Aabb lower_tv(tv.min - Vec3(0, 0, 0.3), tv.max - Vec3(0, 0, 0.3));
+  const std::vector<ApproachPose> at_lower = approachPoses(room.grid, gd, lower_tv, kFlightZ, cfg);
+  ASSERT_FALSE(at_lower.empty());
+  for (const ApproachPose& p : at_lower) EXPECT_LE(p.position.z(), kFlightZ + 1e-9);
+
+  const std::vector<ApproachPose> at_table = approachPoses(room.grid, gd, table, kFlightZ, cfg);
+  ASSERT_FALSE(at_table.empty());
+  expectContract(at_table, room.grid, table, cfg);
+  for (const ApproachPose& p : at_table) EXPECT_LE(p.position.z(), kFlightZ + 1e-9);
+  for (size_t i = 1; i < at_table.size(); ++i) EXPECT_LE(at_table[i - 1].cost_m, at_table[i].cost_m);
+
+  // Out of reach from any pose the flight band allows: none at all (hung 1 m higher).
+  const Aabb far_up(tv.min + Vec3(0, 0, 1.0), tv.max + Vec3(0, 0, 0.3));
+  EXPECT_TRUE(approachPoses(room.grid, gd, far_up, kFlightZ, cfg).empty());
+}
