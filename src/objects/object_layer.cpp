@@ -320,4 +320,16 @@ IntegrateStats ObjectLayer::integrate(const std::vector<Detection>& detections, 
   return st;
 }
 
+const MappedObject* outvotedBy(const ObjectLayer& layer, const MappedObject& o, double shared, double ratio) {
+  const double tau = layer.config().tau;
+  const MappedObject* best = nullptr;
+  for (const MappedObject& q : layer.objects()) {
+    if (q.id == o.id || q.n_observations < ratio * o.n_observations) continue;
+    if (ObjectLayer::boxOverlap(o.box, q.box, tau) <= 0.0) continue;
+    if (geometricOverlap(o.cloud, q.cloud, tau) < shared) continue;
+    if (!best || q.n_observations > best->n_observations) best = &q;
+  }
+  return best;
+}
+
 }  // namespace ussnav

@@ -293,3 +293,37 @@ TEST(ObjectLayer, IntegrateBackProjectsDetections) {
   EXPECT_EQ(layer.objects()[0].n_observations, 2);
   EXPECT_EQ(layer.confirmedCount(), 1u);
 }
+
+TEST(ObjectLayer, AFewMisreadFramesAreOutvotedByTheObjectTheyRead) {
+  ObjectLayer layer = makeLayer();
+  const auto bed = boxSurface(Vec3(0, 0, 0), Vec3(2.0, 1.6, 0.6), 0.02, 0.005);
+  for (int i = 0; i < 12; ++i) layer.integrateCloud(bed, "bed", 0.9, 0, 0, i);
+  // Three frames call the bed's foot end "sofa": a separate object (see the test above).
+  for (int i = 0; i < 3; ++i) layer.integrateCloud(cutX(bed, 0.6), "sofa", 0.9, 0, 0, 20 + i);
+  // A pillow on the bed: its own surface, above the bed's top.
+  const auto pillow = boxSurface(Vec3(1.5, 0.4, 0.62), Vec3(1.9, 1.2, 0.75), 0.02, 0.003);
+  for (int i = 0; i < 3; ++i) layer.integrateCloud(pillow, "pillow", 0.9, 0, 0, 30 + i);
+  // A real sofa elsewhere, seen as often as the misread one.
+  const auto sofa = boxSurface(Vec3(4, 0, 0), Vec3(6, 0.9, 0.8), 0.02, 0.005);
+  for (int i = 0; i < 3; ++i) layer.integrateCloud(sofa, "sofa", 0.9, 0, 0, 40 + i);
+  ASSERT_EQ(layer.size(), 4u);
+  auto labelled = [&](const std::string& l, double x_lo, double x_hi) -> const MappedObject& {
+    for (const MappedObject& o : layer.objects())
+      if (o.label == l && o.centroid.x() >= x_lo && o.centroid.x() <= x_hi) return o;
+    ADD_FAILURE() << "no " << l;
+    return layer.objects()[0];
+  };
+  const MappedObject& the_bed = labelled("bed", 0, 2);
+  const MappedObject& misread = labelled("sofa", 0, 2);
+  EXPECT_EQ(the_bed.n_observations, 12);
+  EXPECT_EQ(misread.n_observations, 3);
+  const MappedObject* by = outvotedBy(layer, misread);
+  ASSERT_NE(by, nullptr);
+  EXPECT_EQ(by->id, the_bed.id);
+  EXPECT_EQ(outvotedBy(layer, labelled("pillow", 1.4, 2)), nullptr);  // its own surface
+  EXPECT_EQ(outvotedBy(layer, labelled("sofa", 4, 6)), nullptr);      // nothing shares it
+  EXPECT_EQ(outvotedBy(layer, the_bed), nullptr);                     // the majority itself
+  // Five readings against twelve (under the ratio 3): the reading stands.
+  for (int i = 0; i < 2; ++i) layer.integrateCloud(cutX(bed, 0.6), "sofa", 0.9, 0, 0, 50 + i);
+  EXPECT_EQ(outvotedBy(layer, labelled("sofa", 0, 2)), nullptr);
+}

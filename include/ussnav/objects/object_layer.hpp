@@ -123,4 +123,12 @@ class ObjectLayer {
   int next_id_ = 1;
 };
 
+// The object that makes `o` a misreading, if any: another object holding at least `shared` of
+// o's points within the layer's tau and seen at least `ratio` times as often. A detector that
+// now and then calls a bed "sofa" leaves beside the bed a "sofa" made of those frames alone (a
+// partial view overlaps the whole bed one way only, so association keeps it apart); such an
+// object is no find. Of several, the most observed; nullptr when there is none.
+const MappedObject* outvotedBy(const ObjectLayer& layer, const MappedObject& o, double shared = 0.5,
+                               double ratio = 3.0);
+
 }  // namespace ussnav
