@@ -183,9 +183,13 @@ void FrontierFinder::dropVisited(const RollingGrid& grid, const CoverageMask& gc
     const uint64_t c = pack(gcm.cellOfKey(unpack(it->first)));
     auto m = memo.find(c);
     if (m == memo.end()) m = memo.emplace(c, gcm.isVisited(unpack(c))).first;
-    // open_in_visited keeps some cells of visited cells: those are judged again.
-    if (m->second && !(cfg_.open_in_visited && isFrontierVoxel(grid, gcm, unpack(it->first), cfg_,
-                                                               cfg_.remember_known_band ? &seen_ : nullptr))) {
+    // open_in_visited keeps some cells of visited cells: those are judged again, in the window; one
+    // beyond it persists as it was judged (as every cell that left the window) until it re-enters.
+    const Vec3i key = unpack(it->first);
+    bool drop = m->second;
+    if (drop && cfg_.open_in_visited)
+      drop = grid.inWindow(key) && !isFrontierVoxel(grid, gcm, key, cfg_, cfg_.remember_known_band ? &seen_ : nullptr);
+    if (drop) {
       markAffected(it->second);
       it = cells_.erase(it);
       ++up.cells_removed;

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unordered_set>
+
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstdio>
@@ -21,13 +23,16 @@ namespace {
 Intrinsics d455(int w, int h) { return Intrinsics::fromFov(w, h, deg2rad(87), deg2rad(58)); }
 
 // Moves, inserts a depth frame, updates GCM then frontiers, clears the log: one driver frame.
+// Also records, independently of the finder's BandMemory, every band voxel ever known.
 struct Driver {
   RollingGrid grid;
   CoverageMask gcm;
   FrontierFinder finder;
+  ExplorationConfig cfg;
+  std::unordered_set<uint64_t> ever_known;  // band voxels known in some frame
   double t = 0.0;
-  explicit Driver(const ExplorationConfig& cfg = {}, const Vec3& start = Vec3(0, 0, 1.2))
-      : grid(GridConfig{}, start), gcm(CoverageConfig{}, grid.resolution()), finder(cfg) {}
+  explicit Driver(const ExplorationConfig& c = {}, const Vec3& start = Vec3(0, 0, 1.2))
+      : grid(GridConfig{}, start), gcm(CoverageConfig{}, grid.resolution()), finder(c), cfg(c) {}
   FrontierUpdate depth(const BoxScene& scene, const Vec3& p, double yaw, int node = 0) {
     grid.moveTo(p);
     grid.insertDepth(test::renderDepth(scene, d455(80, 60), test::cameraPose(p, yaw), 5.0));
@@ -39,6 +44,13 @@ struct Driver {
     return finish(0);
   }
   FrontierUpdate finish(int node) {
+    const double res = grid.resolution();
+    const int zlo = int(std::ceil(cfg.band_z_min / res - 0.5 - 1e-9)), zhi = int(std::floor(cfg.band_z_max / res - 0.5 + 1e-9));
+    const Vec3i lo = grid.minKey(), hi = grid.minKey() + grid.dims();
+    for (int z = std::max(lo.z(), zlo); z < std::min(hi.z(), zhi + 1); ++z)
+      for (int y = lo.y(); y < hi.y(); ++y)
+        for (int x = lo.x(); x < hi.x(); ++x)
+          if (grid.stateFast(Vec3i(x, y, z)) != VoxelState::Unknown) ever_known.insert(FrontierFinder::pack(Vec3i(x, y, z)));
     gcm.update(grid);
     const FrontierUpdate up = finder.update(grid, gcm, node, t);
     t += 0.1;
@@ -50,28 +62,34 @@ struct Driver {
 uint64_t pk(const Vec3i& k) { return FrontierFinder::pack(k); }
 
 // Independent statement of the rule: Free, centre in the band, an Unknown 6-neighbour (outside
-// the window reads Unknown), coverage cell not visited (or, with open_in_visited, an Unknown
-// x-y neighbour).
-bool bruteFrontier(const RollingGrid& g, const CoverageMask& gcm, const Vec3i& k, const ExplorationConfig& cfg) {
+// the window reads Unknown; with remember_known_band one outside the window that was ever known
+// does not count), coverage cell not visited (or, with open_in_visited, from viewpoint_height up
+// to open_in_visited_above over it, an x-y neighbour Unknown and never known).
+bool bruteFrontier(const RollingGrid& g, const CoverageMask& gcm, const Vec3i& k, const ExplorationConfig& cfg,
+                   const std::unordered_set<uint64_t>& ever_known) {
   if (g.state(k) != VoxelState::Free) return false;
   const double zc = (k.z() + 0.5) * g.resolution();
   if (zc < cfg.band_z_min - 1e-9 || zc > cfg.band_z_max + 1e-9) return false;
+  auto known = [&](const Vec3i& n) { return ever_known.count(FrontierFinder::pack(n)) > 0; };
   bool unk = false;
   for (int a = 0; a < 3; ++a)
     for (int s = -1; s <= 1; s += 2) {
       Vec3i n = k;
       n[a] += s;
-      unk |= g.state(n) == VoxelState::Unknown;
+      if (g.state(n) != VoxelState::Unknown) continue;
+      if (cfg.remember_known_band && !g.inWindow(n) && known(n)) continue;
+      unk = true;
     }
   if (!unk) return false;
   if (!gcm.isVisited(gcm.cellOfKey(k))) return true;
-  // open_in_visited, for a window that never moved (so Unknown means never known): an Unknown
-  // neighbour in x or y keeps it a frontier.
   if (!cfg.remember_known_band || !cfg.open_in_visited) return false;
   if (zc < cfg.viewpoint_height - 1e-9 || zc > cfg.viewpoint_height + cfg.open_in_visited_above + 1e-9) return false;
   for (const Vec3i& d : {Vec3i(1, 0, 0), Vec3i(-1, 0, 0), Vec3i(0, 1, 0), Vec3i(0, -1, 0)})
-    if (g.state(k + d) == VoxelState::Unknown) return true;
+    if (g.state(k + d) == VoxelState::Unknown && !known(k + d)) return true;
   return false;
+}
+bool bruteFrontier(const Driver& d, const Vec3i& k, const ExplorationConfig& cfg) {
+  return bruteFrontier(d.grid, d.gcm, k, cfg, d.ever_known);
 }
 
 // Compares every in-window known voxel (outer layer: frontier implies brute force); returns how many frontier cells in the window are Unknown
@@ -89,7 +107,7 @@ int expectCellsMatchBruteForce(const Driver& d, const ExplorationConfig& cfg, co
           unknown_kept += have;
           continue;
         }
-        const bool want = bruteFrontier(g, d.gcm, k, cfg);
+        const bool want = bruteFrontier(d, k, cfg);
         brute += want;
         // On the outer layer only voxels a frame touched are judged: frontier => brute force.
         const bool outer = (k.array() == lo.array()).any() || (k.array() == (hi - Vec3i::Ones()).array()).any();
@@ -191,7 +209,8 @@ TEST(Frontier, MissedChangesTriggerFullRescan) {
 
 TEST(Frontier, VisitedCoverageCellsSuppressFrontiers) {
   const BoxScene scene = test::boxRoom(Vec3(-3.03, -2.87, 0.0), Vec3(3.03, 2.91, 2.73));
-  const ExplorationConfig cfg;
+  ExplorationConfig cfg;
+  cfg.open_in_visited = false;  // the plain rule (open_in_visited: RoomSeenThroughADoor... below)
   Driver d(cfg);
   FrontierFinder blind(cfg);                               // sees a mask that never marks visits
   const CoverageMask never(CoverageConfig{}, d.grid.resolution());
@@ -281,7 +300,7 @@ TEST(Frontier, PersistOutsideWindowAndVanishWhenKnown) {
   for (const Frontier& f : far)
     for (const Vec3i& k : f.cells)
       if (d.grid.state(k) != VoxelState::Unknown) {
-        EXPECT_EQ(d.finder.isFrontierCell(k), bruteFrontier(d.grid, d.gcm, k, cfg));
+        EXPECT_EQ(d.finder.isFrontierCell(k), bruteFrontier(d, k, cfg));
       }
   expectCellsMatchBruteForce(d, cfg, "corridor end");
 }

@@ -42,33 +42,34 @@ TEST(Viewpoint, SafeFreeAndGainMatchesBruteForce) {
   RollingGrid grid(GridConfig{}, Vec3(0, 0, 1.2));
   CoverageMask gcm(CoverageConfig{}, grid.resolution());
   FrontierFinder finder(cfg);
+  // Viewpoints are computed when a frontier is made (or remade) and kept until its cells change:
+  // each is checked against the grid of the frame that made it.
+  int checked = 0, frontiers_with = 0;
   for (int i = 0; i < 6; ++i) {
     const Vec3 p(0.4 * i, 0.0, 1.2);
     grid.moveTo(p);
     grid.insertDepth(test::renderDepth(scene, d455(80, 60), test::cameraPose(p, 1.1 * i), 5.0));
     gcm.update(grid);
-    finder.update(grid, gcm, 0, i);
+    const FrontierUpdate up = finder.update(grid, gcm, 0, i);
     grid.clearChanges();
-  }
-  int checked = 0, frontiers_with = 0;
-  for (const Frontier& f : finder.frontiers()) {
-    frontiers_with += !f.viewpoints.empty();
-    EXPECT_LE(int(f.viewpoints.size()), cfg.max_viewpoints);
-    for (const Viewpoint& v : f.viewpoints) {
-      ++checked;
-      EXPECT_EQ(grid.stateAt(v.position), VoxelState::Free);
-      EXPECT_FALSE(grid.isInflatedOccupied(v.position, cfg.viewpoint_clearance, true));
-      EXPECT_NEAR(v.position.z(), cfg.viewpoint_height, 1e-12);
-      const double r = std::hypot(v.position.x() - f.centroid.x(), v.position.y() - f.centroid.y());
-      EXPECT_GE(r, cfg.viewpoint_r_min - 1e-9);
-      EXPECT_LE(r, cfg.viewpoint_r_max + 1e-9);
-      EXPECT_GE(v.gain, cfg.min_viewpoint_gain);
-      // The viewpoints are from this frame's grid only while no later frame changed it; the
-      // last frame may have, so judge against a fresh computation's positions too.
-      const int brute = bruteGain(grid, f, v.position, v.yaw, cfg);
-      EXPECT_EQ(v.gain, brute) << "frontier " << f.id << " at " << v.position.transpose();
-      // No sampled yaw sees more.
-      for (int y = 0; y < 72; ++y) EXPECT_LE(bruteGain(grid, f, v.position, y * kPi / 36, cfg), v.gain);
+    for (const int id : up.added) {
+      const Frontier* f = finder.find(id);
+      ASSERT_NE(f, nullptr);
+      frontiers_with += !f->viewpoints.empty();
+      EXPECT_LE(int(f->viewpoints.size()), cfg.max_viewpoints);
+      for (const Viewpoint& v : f->viewpoints) {
+        ++checked;
+        EXPECT_EQ(grid.stateAt(v.position), VoxelState::Free);
+        EXPECT_FALSE(grid.isInflatedOccupied(v.position, cfg.viewpoint_clearance, true));
+        EXPECT_NEAR(v.position.z(), cfg.viewpoint_height, 1e-12);
+        const double r = std::hypot(v.position.x() - f->centroid.x(), v.position.y() - f->centroid.y());
+        EXPECT_GE(r, cfg.viewpoint_r_min - 1e-9);
+        EXPECT_LE(r, cfg.viewpoint_r_max + 1e-9);
+        EXPECT_GE(v.gain, cfg.min_viewpoint_gain);
+        EXPECT_EQ(v.gain, bruteGain(grid, *f, v.position, v.yaw, cfg)) << "frontier " << id << " at " << v.position.transpose();
+        // No sampled yaw sees more.
+        for (int y = 0; y < 72; ++y) EXPECT_LE(bruteGain(grid, *f, v.position, y * kPi / 36, cfg), v.gain);
+      }
     }
   }
   std::printf("%zu frontiers, %d with viewpoints, %d viewpoints checked\n", finder.frontiers().size(),

@@ -268,11 +268,11 @@ struct ExplorationConfig {
   double band_z_max = 2.1;
   int min_cluster_cells = 20;       // smaller connected groups of frontier cells are not frontiers
   double max_cluster_extent = 2.0;  // split a cluster (PCA) while longer than this along its axis, m
-  bool remember_known_band = false; // true: free space cut off by the window's edge is a frontier
+  bool remember_known_band = true;  // true: free space cut off by the window's edge is a frontier
                                     // only where the voxel beyond was never known (BandMemory)
-  bool open_in_visited = false;     // with remember_known_band: a visited Coverage Mask cell still
+  bool open_in_visited = true;      // with remember_known_band: a visited Coverage Mask cell still
                                     // holds frontier voxels whose x-y neighbour was never known
-  double open_in_visited_above = 100.0; // ... only voxels whose centre is at viewpoint_height or
+  double open_in_visited_above = 0.25; // ... only voxels whose centre is at viewpoint_height or
                                     // at most this far above it, m: below the sensor the LiDAR
                                     // (-7 deg) leaves a never-known disc around the UAV
   double viewpoint_height = 1.2;    // viewpoints at this z (flight height), m
@@ -347,7 +347,7 @@ struct EpisodeConfig {
   double clearance = 0.4;             // flight paths keep this from mapped obstacles, m
   bool fuse_depth = true;             // the depth camera feeds the grid too (LiDAR blind cone)
   bool end_on_collision = true;       // a collision ends the episode as a failure (DESIGN.md)
-  bool close_look = false;            // a frontier still open at its reached viewpoint gets one more
+  bool close_look = true;             // a frontier still open at its reached viewpoint gets one more
                                       // try from the graph node nearest to it before it is dropped
   template <class V> void visit(V& v) {
     v.field("max_time_s", max_time_s, 1.0, 1e6, "s");
