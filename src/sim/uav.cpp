@@ -25,6 +25,9 @@ bool Uav::idle() const {
 }
 
 bool Uav::step(const GroundTruthGrid& gt, double dt) {
+  // Points the UAV already stands on are reached (a path may repeat its last point: with nothing
+  // left to fly, the step below would never move on to it).
+  while (next_ < path_.size() && (path_[next_] - pose_.position).norm() < 1e-9) ++next_;
   // Remaining length along the path, for braking.
   double remaining = 0.0;
   if (!pathDone()) {

@@ -202,6 +202,23 @@ TEST(Uav, FollowsPathWithinLimits) {
   EXPECT_EQ(uav.collisions(), 0);
 }
 
+TEST(Uav, APathRepeatingItsLastPointEnds) {
+  // Planned paths can repeat a point (house_1 "toilet": a viewpoint path ending in the same point
+  // twice held the UAV there, never done, for 270 s).
+  World w = test::boxRoom(8, 6);
+  GroundTruthGrid gt(w, 0.05);
+  Uav uav(UavConfig{}, Pose{Vec3(1, 1, 1.2), 0.0});
+  uav.setPath({Vec3(2, 1, 1.2), Vec3(2, 1.5, 1.25), Vec3(2, 1.5, 1.25), Vec3(2, 1.5, 1.25)});
+  int steps = 0;
+  while (!uav.pathDone() && steps < 200) {
+    ASSERT_TRUE(uav.step(gt, 0.1));
+    ++steps;
+  }
+  EXPECT_TRUE(uav.pathDone());
+  EXPECT_LT(steps, 50);
+  EXPECT_NEAR((uav.pose().position - Vec3(2, 1.5, 1.25)).norm(), 0.0, 1e-9);
+}
+
 TEST(Uav, FlyingIntoAWallIsACollisionAndStopsOutside) {
   World w = test::boxRoom(6, 4);
   GroundTruthGrid gt(w, 0.05);

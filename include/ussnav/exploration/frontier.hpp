@@ -17,7 +17,8 @@
 // while longer than max_cluster_extent; each has viewpoints (viewpoint.hpp, computed when the
 // cluster is made) and the connectivity-graph node given when it was made. Cells that leave
 // the window persist untouched until a frame makes them known or a visited coverage cell
-// covers them. Memory: one hash entry per frontier cell, one bit per band voxel ever
+// covers them (with open_in_visited, until they re-enter the window: there is no judging them
+// outside it). Memory: one hash entry per frontier cell, one bit per band voxel ever
 // known (64 bits per x-y column).
 
 #include <cstdint>
