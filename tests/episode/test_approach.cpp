@@ -6,12 +6,10 @@
 
 #include <cmath>
 
-#include "support/mapping_scenes.hpp"
+#include "support/scene_flight.hpp"
 #include "ussnav/core/config.hpp"
 #include "ussnav/episode/approach.hpp"
 #include "ussnav/exploration/graph_costs.hpp"
-#include "ussnav/mapping/rolling_grid.hpp"
-#include "ussnav/skeleton/connectivity_graph.hpp"
 
 using namespace ussnav;
 
@@ -19,27 +17,11 @@ namespace {
 
 constexpr double kFlightZ = 1.2;
 
-struct MappedRoom {
-  test::BoxScene scene;
-  RollingGrid grid;
-  ConnectivityGraph graph;
-  double t = 0.0;
-  explicit MappedRoom(test::BoxScene s) : scene(std::move(s)), grid(GridConfig{}, Vec3(3, 2, kFlightZ)) {
-    // Spin at three points of the room so every wall is seen by the depth camera.
+// A room mapped by spinning at three points, so every wall is seen.
+struct MappedRoom : test::SceneFlight {
+  explicit MappedRoom(const test::BoxScene& scene) : SceneFlight(Vec3(3, 2, kFlightZ)) {
     for (const Vec3& p : {Vec3(3, 2, kFlightZ), Vec3(1.5, 2, kFlightZ), Vec3(4.5, 2, kFlightZ)})
-      for (int k = 0; k < 16; ++k) frame(p, k * kPi / 8.0);
-  }
-  void frame(const Vec3& p, double yaw) {
-    grid.moveTo(p);
-    grid.insertScan(test::renderScan(scene, p, 20000, -52.0, 52.0, 40.0));
-    grid.insertDepth(test::renderDepth(scene, Intrinsics::fromFov(80, 60, deg2rad(87), deg2rad(58)),
-                                       test::cameraPose(p, yaw), 6.0));
-    std::vector<Vec3i> occ;
-    for (const VoxelChange& c : grid.changes())
-      if (c.after == VoxelState::Occupied) occ.push_back(c.key);
-    graph.update(grid, p, t, occ);
-    grid.clearChanges();
-    t += 0.1;
+      for (int k = 0; k < 16; ++k) frame(scene, p, k * kPi / 8.0);
   }
 };
 
@@ -69,7 +51,7 @@ TEST(Approach, HighOnAWallOnlyFromAboveFlightHeight) {
   const Aabb table(Vec3(2.6, 1.6, 0.0), Vec3(3.4, 2.0, 0.75));
   scene.solids.push_back(tv);
   scene.solids.push_back(table);
-  MappedRoom room(std::move(scene));
+  MappedRoom room(scene);
   const Config cfg = defaultConfig();
   ASSERT_GT(room.graph.size(), 0);
   const GraphDistances gd(room.graph, room.grid, Vec3(3, 2, kFlightZ));

@@ -7,35 +7,11 @@
 #include <cmath>
 #include <cstdio>
 
-#include "support/mapping_scenes.hpp"
+#include "support/scene_flight.hpp"
 #include "ussnav/episode/flight_path.hpp"
 #include "ussnav/mapping/inflated_map.hpp"
-#include "ussnav/skeleton/connectivity_graph.hpp"
 
 using namespace ussnav;
-
-namespace {
-
-struct Flight {
-  RollingGrid grid;
-  ConnectivityGraph graph;
-  double t = 0.0;
-  explicit Flight(const Vec3& start) : grid(GridConfig{}, start) {}
-  void frame(const test::BoxScene& scene, const Vec3& p, double yaw) {
-    grid.moveTo(p);
-    grid.insertScan(test::renderScan(scene, p, 20000, -52.0, 52.0, 40.0));
-    grid.insertDepth(test::renderDepth(scene, Intrinsics::fromFov(80, 60, deg2rad(87), deg2rad(58)),
-                                       test::cameraPose(p, yaw), 6.0));
-    std::vector<Vec3i> occ;
-    for (const VoxelChange& c : grid.changes())
-      if (c.after == VoxelState::Occupied) occ.push_back(c.key);
-    graph.update(grid, p, t, occ);
-    grid.clearChanges();
-    t += 0.1;
-  }
-};
-
-}  // namespace
 
 TEST(FlightPath, NoSegmentCrossesAnObstacleNearTheWindowEdge) {
   // A corridor closed at x = 6.6-6.8 by a wall with a 0.9 m door off its centre line. Mapped
@@ -44,7 +20,7 @@ TEST(FlightPath, NoSegmentCrossesAnObstacleNearTheWindowEdge) {
   test::BoxScene scene = test::corridor(20.0, 3.0, 2.7);
   scene.solids.push_back(Aabb(Vec3(6.6, -1.6, 0.0), Vec3(6.8, 0.1, 2.7)));
   scene.solids.push_back(Aabb(Vec3(6.6, 1.0, 0.0), Vec3(6.8, 1.6, 2.7)));
-  Flight f(Vec3(1, 0, 1.2));
+  test::SceneFlight f(Vec3(1, 0, 1.2));
   auto fly = [&](const Vec3& a, const Vec3& b, double yaw) {
     const int n = int(std::ceil((b - a).norm() / 0.25));
     for (int i = 0; i <= n; ++i) f.frame(scene, a + (b - a) * (double(i) / n), yaw);

@@ -1,0 +1,20 @@
+#include "support/scene_flight.hpp"
+
+#include <vector>
+
+namespace ussnav::test {
+
+void SceneFlight::frame(const BoxScene& scene, const Vec3& p, double yaw) {
+  grid.moveTo(p);
+  grid.insertScan(renderScan(scene, p, 20000, -52.0, 52.0, 40.0));
+  grid.insertDepth(
+      renderDepth(scene, Intrinsics::fromFov(80, 60, deg2rad(87), deg2rad(58)), cameraPose(p, yaw), 6.0));
+  std::vector<Vec3i> occ;
+  for (const VoxelChange& c : grid.changes())
+    if (c.after == VoxelState::Occupied) occ.push_back(c.key);
+  graph.update(grid, p, t, occ);
+  grid.clearChanges();
+  t += 0.1;
+}
+
+}  // namespace ussnav::test

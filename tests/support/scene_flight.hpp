@@ -1,0 +1,23 @@
+#pragma once
+// A UAV mapping an analytic BoxScene frame by frame, as the episode does: each frame moves the
+// rolling window to the pose, inserts a LiDAR-like scan and a depth image rendered from it, and
+// updates the connectivity graph with the voxels that became occupied. For tests that need a
+// mapped world and its graph without the simulator (approach poses, flight paths).
+
+#include "support/mapping_scenes.hpp"
+#include "ussnav/mapping/rolling_grid.hpp"
+#include "ussnav/skeleton/connectivity_graph.hpp"
+
+namespace ussnav::test {
+
+struct SceneFlight {
+  RollingGrid grid;
+  ConnectivityGraph graph;
+  double t = 0.0;  // simulated time of the next frame, s (10 Hz)
+
+  explicit SceneFlight(const Vec3& start) : grid(GridConfig{}, start) {}
+  // One frame at `p` facing `yaw` (radians).
+  void frame(const BoxScene& scene, const Vec3& p, double yaw);
+};
+
+}  // namespace ussnav::test
