@@ -1,8 +1,11 @@
 #include "ussnav/eval/eval_report.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "ussnav/eval/metrics.hpp"
@@ -89,26 +92,81 @@ std::vector<EpisodeRow> readEpisodesCsv(const std::filesystem::path& path, int* 
   return rows;
 }
 
+std::vector<std::string> splitsOf(const EpisodeRow& r) {
+  std::vector<std::string> s = {r.split};
+  if (r.split == "multi_room" && r.shortest_path_m >= kLongHorizonM) s.push_back("long_horizon");
+  s.push_back("all");
+  return s;
+}
+
+namespace {
+
+constexpr std::array<const char*, 4> kSplits = {"all", "single_room", "multi_room", "long_horizon"};
+constexpr double kSameSpl = 0.02;  // paired episodes closer than this count as the same
+
+std::string pairKey(const EpisodeRow& r) { return r.world + "|" + r.goal + "|" + std::to_string(r.seed); }
+
+bool in(const EpisodeRow& r, const std::string& split) {
+  const auto s = splitsOf(r);
+  return std::find(s.begin(), s.end(), split) != s.end();
+}
+
+// Every other planner against `frontier`, pairing rows of the same world, goal and seed.
+void pairedMarkdown(const std::vector<EpisodeRow>& rows, std::ostringstream& md) {
+  const std::string base = "frontier";
+  std::map<std::string, const EpisodeRow*> baseline;
+  std::set<std::string> others;
+  for (const EpisodeRow& r : rows) {
+    if (r.planner == base) baseline[pairKey(r)] = &r;
+    else others.insert(r.planner);
+  }
+  if (baseline.empty()) return;
+  for (const std::string& planner : others) {
+    md << "## " << planner << " against " << base << ", episode by episode\n\n"
+       << "| split | pairs | SPL " << base << " | SPL " << planner << " | ratio | better | same | worse |\n"
+       << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const char* split : kSplits) {
+      int n = 0, better = 0, worse = 0;
+      double a = 0, b = 0;
+      for (const EpisodeRow& r : rows) {
+        if (r.planner != planner || !in(r, split)) continue;
+        const auto it = baseline.find(pairKey(r));
+        if (it == baseline.end()) continue;
+        ++n, a += it->second->spl, b += r.spl;
+        if (r.spl > it->second->spl + kSameSpl) ++better;
+        else if (r.spl < it->second->spl - kSameSpl) ++worse;
+      }
+      char ratio[32] = "-", line[256];
+      if (a > 0) std::snprintf(ratio, sizeof ratio, "%.2fx", b / a);
+      std::snprintf(line, sizeof line, "| %s | %d | %.3f | %.3f | %s | %d | %d | %d |\n", split, n, n ? a / n : 0.0,
+                    n ? b / n : 0.0, ratio, better, n - better - worse, worse);
+      md << line;
+    }
+    md << "\n";
+  }
+}
+
+}  // namespace
+
 nlohmann::json summaryJson(const std::vector<EpisodeRow>& rows) {
   std::map<std::string, std::map<std::string, std::vector<EpisodeOutcome>>> by;
+  std::map<std::string, std::map<std::string, double>> spl_sum;
   for (const EpisodeRow& r : rows) {
     const EpisodeOutcome o{r.success, r.path_length_m, std::max(r.shortest_path_m, 1e-6), r.time_s, r.collisions};
-    by[r.planner][r.split].push_back(o);
-    by[r.planner]["all"].push_back(o);
+    for (const std::string& split : splitsOf(r)) {
+      by[r.planner][split].push_back(o);
+      spl_sum[r.planner][split] += r.spl;
+    }
   }
   nlohmann::json j = nlohmann::json::object();
   for (const auto& [planner, splits] : by) {
-    for (const char* split : {"single_room", "multi_room", "all"}) {
+    for (const char* split : kSplits) {
       const auto it = splits.find(split);
       const std::vector<EpisodeOutcome> none;
       const std::vector<EpisodeOutcome>& eps = it == splits.end() ? none : it->second;
       // summarize() recomputes SPL from the lengths; the rows carry the episode's own SPL.
       SplitSummary s = summarize(eps);
-      double spl = 0;
-      int n = 0;
-      for (const EpisodeRow& r : rows)
-        if (r.planner == planner && (std::string(split) == "all" || r.split == split)) spl += r.spl, ++n;
-      s.spl = n ? spl / n : 0.0;
+      s.spl = eps.empty() ? 0.0 : spl_sum[planner][split] / double(eps.size());
       j[planner][split] = {{"episodes", s.episodes}, {"sr", s.sr}, {"spl", s.spl}, {"path_length_m", s.path_length_m},
                            {"time_s", s.time_s}, {"collisions", s.collisions}};
     }
@@ -120,7 +178,7 @@ std::string summaryMarkdown(const std::vector<EpisodeRow>& rows, const std::stri
   const nlohmann::json j = summaryJson(rows);
   std::ostringstream md;
   md << "# " << title << "\n\n" << rows.size() << " episodes.\n\n";
-  for (const char* split : {"all", "single_room", "multi_room"}) {
+  for (const char* split : kSplits) {
     md << "## " << split << "\n\n| planner | episodes | SR | SPL | path (m) | time (s) | collisions |\n"
        << "|---|---:|---:|---:|---:|---:|---:|\n";
     for (auto it = j.begin(); it != j.end(); ++it) {
@@ -133,8 +191,11 @@ std::string summaryMarkdown(const std::vector<EpisodeRow>& rows, const std::stri
     }
     md << "\n";
   }
+  pairedMarkdown(rows, md);
   md << "SR: success rate; SPL = S * L* / max(L, L*) averaged over episodes (DESIGN.md); single_room: a goal "
-        "instance is in the start room; multi_room: none is.\n";
+        "instance is in the start room; multi_room: none is; long_horizon: multi_room with L* >= "
+     << kLongHorizonM << " m; ratio: SPL of the planner over SPL of frontier on the same episodes; same: within "
+     << kSameSpl << " SPL.\n";
   return md.str();
 }
 

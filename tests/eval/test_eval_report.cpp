@@ -107,3 +107,36 @@ TEST(EvalReport, SummaryMatchesHandComputation) {
   const std::string md = summaryMarkdown(rows, "t");
   EXPECT_NE(md.find("| frontier | 3 | 0.667 | 0.250 |"), std::string::npos) << md;
 }
+
+TEST(EvalReport, LongHorizonSplitAndPairedTableMatchHandComputation) {
+  // Two worlds x two seeds; L* of 20 m makes a multi-room row long-horizon, 5 m does not.
+  auto at = [](EpisodeRow r, const std::string& world, uint64_t seed, double shortest) {
+    r.world = world, r.seed = seed, r.shortest_path_m = shortest;
+    return r;
+  };
+  const std::vector<EpisodeRow> rows = {
+      at(row("frontier", "multi_room", true, 0.2, 40), "a", 1, 20), at(row("full", "multi_room", true, 0.5, 16), "a", 1, 20),
+      at(row("frontier", "multi_room", true, 0.4, 50), "a", 2, 20), at(row("full", "multi_room", true, 0.41, 49), "a", 2, 20),
+      at(row("frontier", "multi_room", true, 0.8, 6), "b", 1, 5), at(row("full", "multi_room", true, 0.6, 8), "b", 1, 5),
+      at(row("frontier", "single_room", true, 1.0, 3), "c", 1, 3), at(row("full", "single_room", true, 1.0, 3), "c", 1, 3),
+      at(row("full", "multi_room", false, 0.0, 60), "d", 1, 30)};  // no frontier twin: not paired
+  EXPECT_EQ(splitsOf(rows[0]), (std::vector<std::string>{"multi_room", "long_horizon", "all"}));
+  EXPECT_EQ(splitsOf(rows[4]), (std::vector<std::string>{"multi_room", "all"}));
+  EXPECT_EQ(splitsOf(rows[6]), (std::vector<std::string>{"single_room", "all"}));
+  const auto j = summaryJson(rows);
+  EXPECT_EQ(j["frontier"]["long_horizon"]["episodes"].get<int>(), 2);
+  EXPECT_NEAR(j["frontier"]["long_horizon"]["spl"].get<double>(), 0.3, 1e-12);
+  EXPECT_EQ(j["full"]["long_horizon"]["episodes"].get<int>(), 3);
+  EXPECT_NEAR(j["full"]["long_horizon"]["sr"].get<double>(), 2.0 / 3.0, 1e-12);
+  EXPECT_NEAR(j["full"]["long_horizon"]["spl"].get<double>(), 0.91 / 3.0, 1e-12);
+  EXPECT_EQ(j["full"]["multi_room"]["episodes"].get<int>(), 4);
+  const std::string md = summaryMarkdown(rows, "t");
+  // long_horizon pairs: (0.2 -> 0.5) better, (0.4 -> 0.41) same; ratio 0.91 / 0.6.
+  EXPECT_NE(md.find("| long_horizon | 2 | 0.300 | 0.455 | 1.52x | 1 | 1 | 0 |"), std::string::npos) << md;
+  // multi_room pairs add (0.8 -> 0.6) worse: 1.4 / 1.51.
+  EXPECT_NE(md.find("| multi_room | 3 | 0.467 | 0.503 | 1.08x | 1 | 1 | 1 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| single_room | 1 | 1.000 | 1.000 | 1.00x | 0 | 1 | 0 |"), std::string::npos) << md;
+  // Without the baseline there is nothing to pair.
+  const std::vector<EpisodeRow> full_only(rows.begin() + 1, rows.begin() + 2);
+  EXPECT_EQ(summaryMarkdown(full_only, "t").find("against frontier"), std::string::npos);
+}

@@ -1,7 +1,12 @@
 #pragma once
 // Rows of DIR/episodes.csv (one finished episode each) and the summary tables built from them
 // (summary.json: {planner: {split: {episodes, sr, spl, path_length_m, time_s, collisions}}} with
-// splits single_room, multi_room, all; summary.md: the same as Markdown tables).
+// splits single_room, multi_room, long_horizon, all; summary.md: the same as Markdown tables and,
+// where the rows hold `frontier` (the baseline) and another planner, each other planner paired
+// with it episode by episode (same world, goal and seed): SPL ratio, better / same / worse).
+//
+// long_horizon is the part of multi_room whose shortest path L* is at least kLongHorizonM: the
+// paper's "long-horizon missions", where frontier-only exploration is said to degrade.
 
 #include <filesystem>
 #include <string>
@@ -21,6 +26,11 @@ struct EpisodeRow {
   int frames = 0, collisions = 0;
   std::string key() const;  // world|goal|planner|seed
 };
+
+constexpr double kLongHorizonM = 15.0;
+// The splits a row counts in: its own (single_room or multi_room), long_horizon where it
+// qualifies, and all.
+std::vector<std::string> splitsOf(const EpisodeRow& r);
 
 EpisodeRow rowOf(const EpisodeResult& r);
 std::string csvHeader();
