@@ -11,6 +11,23 @@ double distanceToBox(const Aabb& box, const Vec3& p) {
   return d.norm();
 }
 
+namespace {
+
+// The line of sight from p towards the box centre c stops at the box: nothing blocks it, or the
+// first blocking voxel meets the box (grown by kTouch for rounding). A wall the object stands
+// against lies within a voxel of the box but not in it; stopping there is no view of the object.
+bool seesBox(const OccupancyMap& map, const Vec3& p, const Vec3& c, const Aabb& box) {
+  constexpr double kTouch = 0.01;
+  const RayHit hit = castRay(map, p, c, false);
+  if (!hit.blocked) return true;
+  const Vec3 inside = hit.point + (c - p).normalized() * (1e-3 * map.resolution());
+  const Vec3 lo = map.centerOf(map.keyOf(inside)) - Vec3::Constant(0.5 * map.resolution());
+  const Vec3 hi = lo + Vec3::Constant(map.resolution());
+  return (lo.array() <= box.max.array() + kTouch).all() && (hi.array() >= box.min.array() - kTouch).all();
+}
+
+}  // namespace
+
 std::vector<ApproachPose> approachPoses(const OccupancyMap& map, const GraphDistances& from_uav, const Aabb& box,
                                         double flight_z, const Config& cfg, int max_poses) {
   std::vector<ApproachPose> out;
@@ -38,8 +55,7 @@ std::vector<ApproachPose> approachPoses(const OccupancyMap& map, const GraphDist
         const double horiz = to.head<2>().norm();
         const double zt = std::clamp(p.z(), box.min.z(), box.max.z());
         if (std::atan2(std::abs(p.z() - zt), std::max(horiz, 0.05)) > half_v) continue;  // the box centre in view
-        const RayHit hit = castRay(map, p, c, false);
-        if (hit.blocked && distanceToBox(box, hit.point) > 0.2) continue;
+        if (!seesBox(map, p, c, box)) continue;
         const double cost = from_uav.toPoint(p);
         if (!std::isfinite(cost)) continue;
         out.push_back(ApproachPose{p, std::atan2(to.y(), to.x()), cost});

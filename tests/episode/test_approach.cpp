@@ -77,3 +77,27 @@ TEST(Approach, HighOnAWallOnlyFromAboveFlightHeight) {
   const Aabb far_up(tv.min + Vec3(0, 0, 1.0), tv.max + Vec3(0, 0, 0.3));
   EXPECT_TRUE(approachPoses(room.grid, gd, far_up, kFlightZ, cfg).empty());
 }
+
+TEST(Approach, NeverThroughTheWallAnObjectStandsAgainst) {
+  // Two 6 x 4 m rooms split by a wall (y = 3.94..4.06) with a door at x = 1..2. A fridge-sized
+  // box stands flush against the wall's far side (3.5 cm gap, as a furnished kitchen has it).
+  // From the near room the wall lies within a voxel of the box: the line of sight stops there,
+  // which is no view of the box. Every pose must be in the fridge's own room.
+  test::BoxScene scene = test::boxRoom(Vec3(0, 0, 0), Vec3(6, 8, 2.8), 0.2, false);
+  scene.solids.push_back(Aabb(Vec3(0, 3.94, 0), Vec3(1, 4.06, 2.8)));
+  scene.solids.push_back(Aabb(Vec3(2, 3.94, 0), Vec3(6, 4.06, 2.8)));
+  scene.solids.push_back(Aabb(Vec3(1, 3.94, 2.1), Vec3(2, 4.06, 2.8)));
+  const Aabb fridge(Vec3(4.0, 4.095, 0.0), Vec3(4.65, 4.805, 1.84));
+  scene.solids.push_back(fridge);
+  test::SceneFlight flight(Vec3(1.5, 2, kFlightZ));
+  for (const Vec3& p : {Vec3(1.5, 2, kFlightZ), Vec3(3, 2, kFlightZ), Vec3(4.5, 2, kFlightZ), Vec3(1.5, 4, kFlightZ),
+                        Vec3(1.5, 6, kFlightZ), Vec3(3, 6, kFlightZ), Vec3(4.5, 6, kFlightZ)})
+    for (int k = 0; k < 16; ++k) flight.frame(scene, p, k * kPi / 8.0);
+  const Config cfg = defaultConfig();
+  const GraphDistances gd(flight.graph, flight.grid, Vec3(4.3, 2, kFlightZ));  // the UAV just behind the wall
+
+  const std::vector<ApproachPose> poses = approachPoses(flight.grid, gd, fridge, kFlightZ, cfg, 100);
+  ASSERT_FALSE(poses.empty());
+  expectContract(poses, flight.grid, fridge, cfg);
+  for (const ApproachPose& p : poses) EXPECT_GT(p.position.y(), 4.06) << p.position.transpose();
+}

@@ -7,7 +7,8 @@
 // obstacles and unknown space by episode.clearance in the map (UAV radius + 0.1 m when no pose
 // keeps that), the box centre is inside
 // the camera's field of view facing it (5 degrees inside the vertical half-angle), and the
-// line of sight towards the box centre is not cut by an obstacle before reaching the box.
+// line of sight towards the box centre is not cut before reaching the box (the first occupied
+// voxel on it, if any, meets the box: a wall the object stands against does not).
 // Ranked by graph distance from the UAV. Pure function of the map and graph.
 
 #include <vector>
