@@ -136,10 +136,11 @@ void pairedMarkdown(const std::vector<EpisodeRow>& rows, std::ostringstream& md)
         if (r.spl > it->second->spl + kSameSpl) ++better;
         else if (r.spl < it->second->spl - kSameSpl) ++worse;
       }
-      char ratio[32] = "-", line[256];
+      char ratio[32] = "-", mean_a[32] = "-", mean_b[32] = "-", line[256];  // no pairs: "-", not 0
       if (a > 0) std::snprintf(ratio, sizeof ratio, "%.2fx", b / a);
-      std::snprintf(line, sizeof line, "| %s | %d | %.3f | %.3f | %s | %d | %d | %d |\n", split, n, n ? a / n : 0.0,
-                    n ? b / n : 0.0, ratio, better, n - better - worse, worse);
+      if (n > 0) std::snprintf(mean_a, sizeof mean_a, "%.3f", a / n), std::snprintf(mean_b, sizeof mean_b, "%.3f", b / n);
+      std::snprintf(line, sizeof line, "| %s | %d | %s | %s | %s | %d | %d | %d |\n", split, n, mean_a, mean_b, ratio,
+                    better, n - better - worse, worse);
       md << line;
     }
     md << "\n";

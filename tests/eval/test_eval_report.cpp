@@ -1,8 +1,9 @@
 // Suite files and the eval report: parsing with clear errors, CSV round trip (and recovery from
-// a cut line), and summary numbers against hand computation.
+// a cut line), summary numbers against hand computation, and the suites shipped in configs/suites.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -136,7 +137,43 @@ TEST(EvalReport, LongHorizonSplitAndPairedTableMatchHandComputation) {
   // multi_room pairs add (0.8 -> 0.6) worse: 1.4 / 1.51.
   EXPECT_NE(md.find("| multi_room | 3 | 0.467 | 0.503 | 1.08x | 1 | 1 | 1 |"), std::string::npos) << md;
   EXPECT_NE(md.find("| single_room | 1 | 1.000 | 1.000 | 1.00x | 0 | 1 | 0 |"), std::string::npos) << md;
+  // A split with no pairs shows no SPL (not 0.000).
+  const std::vector<EpisodeRow> multi_only(rows.begin(), rows.begin() + 2);
+  EXPECT_NE(summaryMarkdown(multi_only, "t").find("| single_room | 0 | - | - | - | 0 | 0 | 0 |"), std::string::npos);
   // Without the baseline there is nothing to pair.
   const std::vector<EpisodeRow> full_only(rows.begin() + 1, rows.begin() + 2);
   EXPECT_EQ(summaryMarkdown(full_only, "t").find("against frontier"), std::string::npos);
+}
+
+TEST(Suite, ShippedSuitesLoadAndTheLargeOneIsMultiRoom) {
+  const auto dir = std::filesystem::path(USSNAV_SOURCE_DIR) / "configs/suites";
+  int files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    if (e.path().extension() != ".yaml") continue;
+    ++files;
+    const Suite s = loadSuite(e.path());
+    EXPECT_FALSE(s.worlds.empty()) << e.path();
+    EXPECT_FALSE(s.goals.empty()) << e.path();
+  }
+  EXPECT_GE(files, 3);
+
+  // configs/suites/large.yaml promises 16-24 rooms, a start in a hallway or corridor, and no goal
+  // instance in the start room (every task multi-room).
+  const Suite large = loadSuite(dir / "large.yaml");
+  for (const SuiteWorld& sw : large.worlds) {
+    ASSERT_EQ(sw.kind, SuiteWorld::Kind::Generate) << sw.name;
+    const World w = materializeWorld(sw);
+    EXPECT_GE(w.rooms.size(), 16u) << sw.name;
+    EXPECT_LE(w.rooms.size(), 24u) << sw.name;
+    const Room* start = w.roomAt(w.start.position.head<2>());
+    ASSERT_NE(start, nullptr) << sw.name;
+    EXPECT_TRUE(start->type == "hallway" || start->type == "corridor") << sw.name << ": " << start->type;
+    int instances = 0;
+    for (const Object& o : w.objects) {
+      if (std::find(large.goals.begin(), large.goals.end(), o.category) == large.goals.end()) continue;
+      ++instances;
+      EXPECT_NE(o.room_id, start->id) << sw.name << ": a " << o.category << " in the start room";
+    }
+    EXPECT_GT(instances, 0) << sw.name;
+  }
 }
