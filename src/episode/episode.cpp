@@ -229,7 +229,8 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
   std::map<int, double> failed_objects;  // object id -> retry time
   std::map<int, int> object_failures;     // object id -> failed approaches (kMaxObjectTries: dropped)
   std::map<int, int> object_transits;     // object id -> transit flights towards it
-  constexpr int kMaxObjectTries = 3, kMaxTransits = 2;
+  std::map<int, int> far_failures;       // object id -> no approach pose while farther than transit_radius
+  constexpr int kMaxObjectTries = 3, kMaxTransits = 2, kMaxFarTries = 10;
   bool approaching = false;
   bool transit = false;  // approaching a graph node near the object, not the object itself
   double last_transit_check = -1e9;
@@ -402,12 +403,22 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
           }
         }
         if (!ok) {
+          // No pose from afar is no verdict on the object: the map around it is what is missing
+          // (seen through a door; the transits cut short by a blocked path). It is tried again
+          // later with one more transit, and only failures within transit_radius of it count
+          // towards dropping it for good (a toilet missed this way ended an episode "explored").
+          const bool near = (best->centroid - uav.pose().position).head<2>().norm() <= ep.transit_radius;
+          if (near || ++far_failures[best->id] > kMaxFarTries) {
+            failObject(best->id);
+          } else {
+            failed_objects[best->id] = t + ep.blacklist_s;
+            object_transits[best->id] = std::min(object_transits[best->id], kMaxTransits - 1);
+          }
           if (std::getenv("USSNAV_DEBUG_EPISODE"))
-            std::fprintf(stderr, "[t=%.1f] object %d (%s) at (%.2f %.2f %.2f): no approach (%zu poses, uav %.2f %.2f)\n", t,
+            std::fprintf(stderr, "[t=%.1f] object %d (%s) at (%.2f %.2f %.2f): no approach (%zu poses, uav %.2f %.2f%s)\n", t,
                          best->id, best->label.c_str(), best->centroid.x(), best->centroid.y(), best->centroid.z(),
                          approachPoses(grid, gd, best->box, flight_z, cfg).size(), uav.pose().position.x(),
-                         uav.pose().position.y());
-          failObject(best->id);
+                         uav.pose().position.y(), near ? ", near" : "");
           ++R.unreachable;
         }
       }
