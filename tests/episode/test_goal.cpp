@@ -37,6 +37,7 @@ TEST(Goal, InstancesInTheWorld) {
 TEST(Goal, ADogBedIsNotABedInARealHouse) {
   // ProcTHOR house_7 (default suite) has one bed and one dog bed: only the bed is a goal
   // instance, so neither the shortest path nor success can come from the dog bed.
+  if (!test::haveSharedData()) GTEST_SKIP() << "shared data absent";
   const World w = importProcthorHouse(test::sharedData() / "procthor_houses" / "houses" / "house_7.json");
   const std::shared_ptr<const TextEncoder> enc(makeTextEncoder(defaultConfig().perception));
   int dog_beds = 0;
