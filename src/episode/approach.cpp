@@ -21,7 +21,7 @@ bool seesBox(const OccupancyMap& map, const Vec3& p, const Vec3& c, const Aabb& 
   const RayHit hit = castRay(map, p, c, false);
   if (!hit.blocked) return true;
   const Vec3 inside = hit.point + (c - p).normalized() * (1e-3 * map.resolution());
-  const Vec3 lo = map.centerOf(map.keyOf(inside)) - Vec3::Constant(0.5 * map.resolution());
+  const Vec3 lo = map.keyOf(inside).cast<double>() * map.resolution();  // the blocking voxel's corner
   const Vec3 hi = lo + Vec3::Constant(map.resolution());
   return (lo.array() <= box.max.array() + kTouch).all() && (hi.array() >= box.min.array() - kTouch).all();
 }

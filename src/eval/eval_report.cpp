@@ -138,7 +138,10 @@ void pairedMarkdown(const std::vector<EpisodeRow>& rows, std::ostringstream& md)
       }
       char ratio[32] = "-", mean_a[32] = "-", mean_b[32] = "-", line[256];  // no pairs: "-", not 0
       if (a > 0) std::snprintf(ratio, sizeof ratio, "%.2fx", b / a);
-      if (n > 0) std::snprintf(mean_a, sizeof mean_a, "%.3f", a / n), std::snprintf(mean_b, sizeof mean_b, "%.3f", b / n);
+      if (n > 0) {
+        std::snprintf(mean_a, sizeof mean_a, "%.3f", a / n);
+        std::snprintf(mean_b, sizeof mean_b, "%.3f", b / n);
+      }
       std::snprintf(line, sizeof line, "| %s | %d | %s | %s | %s | %d | %d | %d |\n", split, n, mean_a, mean_b, ratio,
                     better, n - better - worse, worse);
       md << line;
