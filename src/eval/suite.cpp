@@ -93,6 +93,11 @@ Suite loadSuite(const std::filesystem::path& path) {
         throw InputError(file, f + ".generate.style", "expected office or apartment");
       sw.generate.seed = g["seed"] ? scalar<uint64_t>(g["seed"], file, f + ".generate.seed", "an integer") : 1;
       sw.generate.target_rooms = g["rooms"] ? scalar<int>(g["rooms"], file, f + ".generate.rooms", "an integer") : 0;
+      if (sw.generate.target_rooms != 0 &&
+          (sw.generate.target_rooms < kMinGeneratedRooms || sw.generate.target_rooms > kMaxGeneratedRooms))
+        throw InputError(file, f + ".generate.rooms",
+                         "expected 0 (any) or " + std::to_string(kMinGeneratedRooms) + ".." +
+                             std::to_string(kMaxGeneratedRooms) + ", got " + std::to_string(sw.generate.target_rooms));
       sw.name = sw.generate.style + "-" + std::to_string(sw.generate.seed) +
                 (sw.generate.target_rooms ? "-r" + std::to_string(sw.generate.target_rooms) : "");
     } else {

@@ -71,6 +71,9 @@ TEST(Suite, BadFilesNameTheField) {
   EXPECT_NE(errorOf([] { loadSuite(writeText("c.yaml", "worlds:\n  - generate: {}\n    colour: red\ngoals: [bed]\n")); })
                 .find("worlds[0].colour"),
             std::string::npos);
+  EXPECT_NE(errorOf([] { loadSuite(writeText("g.yaml", "worlds:\n  - generate: {rooms: 40}\ngoals: [bed]\n")); })
+                .find("worlds[0].generate.rooms"),
+            std::string::npos);
   EXPECT_NE(errorOf([] { loadSuite(writeText("d.yaml", "worlds:\n  - generate: {}\n")); }).find("goals"), std::string::npos);
   EXPECT_NE(errorOf([] { loadSuite(writeText("e.yaml", "worlds: [\n")); }).find("YAML"), std::string::npos);
   EXPECT_NE(errorOf([] { loadSuite(writeText("f.yaml", "worlds:\n  - generate: {}\n  - generate: {}\ngoals: [bed]\n")); })
