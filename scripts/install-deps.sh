@@ -17,6 +17,7 @@ PACKAGES=(
   wordnet-dev wordnet-base # offline word semantics
   libgtest-dev libgmock-dev libbenchmark-dev
   liboctomap-dev           # real Freiburg scans + benchmark reference
+  libassimp-dev            # COLLADA wall meshes of the AWS Gazebo worlds
   libpng-dev zlib1g-dev    # pictures and 2D maps
 )
 

@@ -55,12 +55,12 @@ void addWorldImport(CLI::App& root) {
   cmd->fallthrough();
   cmd->footer("Accepted: " + acceptedImportFormats());
   cmd->add_option("file", args->input, "ProcTHOR house .json, Webots apartment folder/.wbt/rooms_enu.tsv, "
-                                      ".bt/.ot octree or .pcd point cloud")
+                                      "AWS Gazebo world folder/.world/objects.tsv, .bt/.ot octree or .pcd point cloud")
       ->required();
   cmd->add_option("--out,-o", args->out, "world JSON to write (atomically)")->required();
   cmd->add_option("--assets", args->assets, "ProcTHOR asset sizes (asset_bboxes.tsv or asset-database.json); "
                                             "default: beside the house folder");
-  cmd->add_option("--resolution", args->resolution, "scan voxel size in m (default: the octree's own; 0.1 for .pcd)")
+  cmd->add_option("--resolution", args->resolution, "voxel size in m of scans and Gazebo wall meshes (default: the octree's own; 0.1 for .pcd and Gazebo)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--flight-height", args->flight_height, "start pose height above the floor, m")
       ->check(CLI::PositiveNumber);

@@ -67,21 +67,21 @@ Vec2 deepestPoint(const std::vector<Vec2>& poly) {
 }
 
 void drawVoxels(Image& img, const TopDownView& v, const ObstacleVoxels& ob) {
-  // Max projection: the highest occupied voxel of each column, darker for taller.
-  std::map<std::pair<int, int>, int> top;
+  // Occupied voxels per column, darker for more: walls (full height) dark, a floor and a
+  // ceiling (two voxels) pale, furniture and low clutter in between.
+  std::map<std::pair<int, int>, int> count;
   int kmin = INT32_MAX, kmax = INT32_MIN;
   for (const auto& c : ob.cells) {
-    auto [it, added] = top.emplace(std::make_pair(c.x(), c.y()), c.z());
-    if (!added) it->second = std::max(it->second, c.z());
+    ++count[std::make_pair(c.x(), c.y())];
     kmin = std::min(kmin, c.z());
     kmax = std::max(kmax, c.z());
   }
-  const double span = std::max(1, kmax - kmin);
-  for (const auto& [ij, k] : top) {
+  const double span = std::max(1, kmax - kmin + 1);
+  for (const auto& [ij, n] : count) {
     const Vec2 lo = v.toPx(Vec2(ob.origin.x() + ij.first * ob.resolution, ob.origin.y() + ij.second * ob.resolution));
     const Vec2 hi = v.toPx(Vec2(ob.origin.x() + (ij.first + 1) * ob.resolution,
                                 ob.origin.y() + (ij.second + 1) * ob.resolution));
-    const uint8_t g = uint8_t(std::lround(200 - 170 * (k - kmin) / span));
+    const uint8_t g = uint8_t(std::lround(225 - 205 * std::min(1.0, n / span)));
     img.fillRect(int(std::floor(lo.x())), int(std::ceil(hi.y())), int(std::ceil(hi.x())) - 1,
                  int(std::floor(lo.y())), {g, g, g});
   }

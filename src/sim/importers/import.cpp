@@ -15,13 +15,15 @@ const char* importFormatName(ImportFormat f) {
     case ImportFormat::kProcthor: return "procthor";
     case ImportFormat::kWebots: return "webots";
     case ImportFormat::kScan: return "scan";
+    case ImportFormat::kGazebo: return "gazebo";
   }
   return "?";
 }
 
 std::string acceptedImportFormats() {
   return "ProcTHOR house .json (rooms[] with floorPolygon); Webots apartment (its folder, the .wbt, "
-         "or rooms_enu.tsv, with rooms_enu.tsv and objects_enu.tsv beside it); OctoMap .bt/.ot; PCD .pcd";
+         "or rooms_enu.tsv, with rooms_enu.tsv and objects_enu.tsv beside it); AWS RoboMaker Gazebo world (its folder, "
+         "the .world or objects.tsv, with objects.tsv and models/ beside it); OctoMap .bt/.ot; PCD .pcd";
 }
 
 ImportFormat detectImportFormat(const fs::path& path) {
@@ -30,12 +32,18 @@ ImportFormat detectImportFormat(const fs::path& path) {
   if (!fs::exists(path, ec)) throw InputError(file, "", "no such file or folder");
   if (fs::is_directory(path, ec)) {
     if (fs::exists(path / "rooms_enu.tsv")) return ImportFormat::kWebots;
-    throw InputError(file, "", "a folder without rooms_enu.tsv; accepted: " + acceptedImportFormats());
+    if (isGazeboDataset(path)) return ImportFormat::kGazebo;
+    throw InputError(file, "", "a folder without rooms_enu.tsv or objects.tsv and a .world; accepted: " + acceptedImportFormats());
   }
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   const std::string name = path.filename().string();
   if (ext == ".bt" || ext == ".ot" || ext == ".pcd") return ImportFormat::kScan;
+  if (ext == ".world" || name == "objects.tsv") {
+    if (!isGazeboDataset(path))
+      throw InputError(file, "", "a Gazebo world needs objects.tsv and a .world file in the same folder");
+    return ImportFormat::kGazebo;
+  }
   if (ext == ".wbt" || name == "rooms_enu.tsv" || name == "objects_enu.tsv") return ImportFormat::kWebots;
   if (ext == ".json") {
     const nlohmann::json j = readJsonFile(path);
@@ -52,6 +60,7 @@ World importWorld(const fs::path& path, const ImportOptions& opt, ImportReport* 
     case ImportFormat::kProcthor: return importProcthorHouse(path, opt, report);
     case ImportFormat::kWebots: return importWebotsApartment(path, opt, report);
     case ImportFormat::kScan: return importScan(path, opt, report);
+    case ImportFormat::kGazebo: return importGazeboWorld(path, opt, report);
   }
   throw InputError(path.string(), "", "no importer");
 }

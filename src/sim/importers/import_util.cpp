@@ -207,4 +207,95 @@ Pose freeStartInLargestRoom(const World& w, double height, const std::string& so
   return pose;
 }
 
+VoxelStart chooseVoxelStart(const std::vector<Vec3i>& cells, double res, double floor_z, double flight) {
+  Vec3i lo = cells.front(), hi = lo;
+  for (const auto& c : cells) {
+    lo = lo.cwiseMin(c);
+    hi = hi.cwiseMax(c);
+  }
+  const int nx = hi.x() - lo.x() + 1, ny = hi.y() - lo.y() + 1;
+  std::vector<uint8_t> blocked(size_t(nx) * ny, 0);
+  const double band_lo = floor_z + 0.3, band_hi = floor_z + flight + 0.6;
+  Vec2 centroid = Vec2::Zero();
+  size_t nb = 0;
+  for (const auto& c : cells) {
+    const double zc = (c.z() + 0.5) * res;
+    if (zc < band_lo || zc > band_hi) continue;
+    uint8_t& b = blocked[size_t(c.y() - lo.y()) * nx + (c.x() - lo.x())];
+    if (!b) {
+      b = 1;
+      centroid += Vec2(c.x() + 0.5, c.y() + 0.5) * res;
+      ++nb;
+    }
+  }
+  VoxelStart out;
+  if (nb == 0) return out;
+  centroid /= double(nb);
+  // Two-pass chamfer distance (in cells) to the nearest blocked cell.
+  const double inf = 1e9, d1 = 1.0, d2 = std::sqrt(2.0);
+  std::vector<double> dist(blocked.size());
+  for (size_t i = 0; i < dist.size(); ++i) dist[i] = blocked[i] ? 0.0 : inf;
+  auto at = [&](int x, int y) -> double& { return dist[size_t(y) * nx + x]; };
+  for (int y = 0; y < ny; ++y)
+    for (int x = 0; x < nx; ++x) {
+      double& d = at(x, y);
+      if (x > 0) d = std::min(d, at(x - 1, y) + d1);
+      if (y > 0) d = std::min(d, at(x, y - 1) + d1);
+      if (x > 0 && y > 0) d = std::min(d, at(x - 1, y - 1) + d2);
+      if (x + 1 < nx && y > 0) d = std::min(d, at(x + 1, y - 1) + d2);
+    }
+  for (int y = ny - 1; y >= 0; --y)
+    for (int x = nx - 1; x >= 0; --x) {
+      double& d = at(x, y);
+      if (x + 1 < nx) d = std::min(d, at(x + 1, y) + d1);
+      if (y + 1 < ny) d = std::min(d, at(x, y + 1) + d1);
+      if (x + 1 < nx && y + 1 < ny) d = std::min(d, at(x + 1, y + 1) + d2);
+      if (x > 0 && y + 1 < ny) d = std::min(d, at(x - 1, y + 1) + d2);
+    }
+  // Enclosed: a blocked cell somewhere left, right, below and above (outside the building fails).
+  std::vector<uint8_t> enclosed(blocked.size(), 0);
+  std::vector<uint8_t> any_before_x(blocked.size()), any_after_x(blocked.size()), any_before_y(blocked.size()),
+      any_after_y(blocked.size());
+  for (int y = 0; y < ny; ++y) {
+    uint8_t a = 0;
+    for (int x = 0; x < nx; ++x) any_before_x[size_t(y) * nx + x] = (a |= blocked[size_t(y) * nx + x]);
+    a = 0;
+    for (int x = nx - 1; x >= 0; --x) any_after_x[size_t(y) * nx + x] = (a |= blocked[size_t(y) * nx + x]);
+  }
+  for (int x = 0; x < nx; ++x) {
+    uint8_t a = 0;
+    for (int y = 0; y < ny; ++y) any_before_y[size_t(y) * nx + x] = (a |= blocked[size_t(y) * nx + x]);
+    a = 0;
+    for (int y = ny - 1; y >= 0; --y) any_after_y[size_t(y) * nx + x] = (a |= blocked[size_t(y) * nx + x]);
+  }
+  double best_clear = 0;
+  for (size_t i = 0; i < blocked.size(); ++i) {
+    enclosed[i] = !blocked[i] && any_before_x[i] && any_after_x[i] && any_before_y[i] && any_after_y[i];
+    if (enclosed[i]) best_clear = std::max(best_clear, dist[i]);
+  }
+  out.enclosed = best_clear > 0;
+  if (!out.enclosed)  // no enclosed free cell: take the clearest free cell anywhere
+    for (size_t i = 0; i < blocked.size(); ++i) {
+      enclosed[i] = !blocked[i];
+      if (enclosed[i]) best_clear = std::max(best_clear, dist[i]);
+    }
+  if (best_clear <= 0) return out;
+  const double want = std::min(best_clear, 1.0 / res + 0.5);
+  double best_d2 = std::numeric_limits<double>::infinity();
+  for (int y = 0; y < ny; ++y)
+    for (int x = 0; x < nx; ++x) {
+      const size_t i = size_t(y) * nx + x;
+      if (!enclosed[i] || dist[i] < want) continue;
+      const Vec2 p = Vec2(lo.x() + x + 0.5, lo.y() + y + 0.5) * res;
+      const double d2c = (p - centroid).squaredNorm();
+      if (d2c < best_d2) {
+        best_d2 = d2c;
+        out.xy = p;
+        out.clearance = dist[i] * res - 0.5 * res;
+        out.found = true;
+      }
+    }
+  return out;
+}
+
 }  // namespace ussnav::importers

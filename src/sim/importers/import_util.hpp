@@ -62,4 +62,17 @@ double clearanceAt(const World& w, const Vec3& p);
 // no room.
 Pose freeStartInLargestRoom(const World& w, double height, const std::string& source);
 
+// A start in a voxel world (cells at origin 0, `res` m): among cells of the 2D projection that
+// are free in the band floor+0.3 .. floor+flight+0.6 m and enclosed by occupied cells in all four
+// axis directions, those with clearance >= min(best clearance, 1 m); of these the one nearest the
+// centroid of the occupied cells. found = false when no free cell exists; enclosed = false when
+// no free cell is enclosed (then the clearest free cell anywhere).
+struct VoxelStart {
+  bool found = false;
+  bool enclosed = true;
+  Vec2 xy = Vec2::Zero();
+  double clearance = 0;  // metres, in the 2D projection
+};
+VoxelStart chooseVoxelStart(const std::vector<Vec3i>& cells, double res, double floor_z, double flight);
+
 }  // namespace ussnav::importers

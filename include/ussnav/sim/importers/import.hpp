@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 
+#include "ussnav/sim/importers/gazebo.hpp"
 #include "ussnav/sim/importers/import_report.hpp"
 #include "ussnav/sim/importers/procthor.hpp"
 #include "ussnav/sim/importers/scan.hpp"
@@ -15,9 +16,9 @@
 
 namespace ussnav {
 
-enum class ImportFormat { kProcthor, kWebots, kScan };
+enum class ImportFormat { kProcthor, kWebots, kScan, kGazebo };
 
-// "procthor", "webots", "scan".
+// "procthor", "webots", "scan", "gazebo".
 const char* importFormatName(ImportFormat f);
 // One line listing what importWorld accepts (used in error messages and --help).
 std::string acceptedImportFormats();

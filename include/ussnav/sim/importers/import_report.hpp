@@ -15,15 +15,15 @@ struct ImportOptions {
   // ProcTHOR asset sizes (asset_bboxes.tsv or asset-database.json); empty = look beside the
   // house folder (../asset_bboxes.tsv, then ../asset-database.json).
   std::filesystem::path asset_database;
-  // Scans: voxel size (0 = the octree's own resolution; 0.1 m for point clouds) and the kept
-  // height band around the detected floor.
+  // Scans: voxel size (0 = the octree's own resolution; 0.1 m for point clouds and Gazebo wall
+  // meshes) and the kept height band around the detected floor.
   double scan_resolution = 0.0;
   double scan_crop_below = 0.2;
   double scan_crop_above = 3.5;
 };
 
 struct ImportReport {
-  std::string format;                  // "procthor", "webots", "scan", "houseexpo"
+  std::string format;                  // "procthor", "webots", "scan", "gazebo"
   int source_objects = 0;              // object entries read from the input
   int dropped_objects = 0;             // objects whose centre lies outside every room
   int skipped_entries = 0;             // entries that are not objects (lights, sockets, ...)
