@@ -177,8 +177,8 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
   StageTimes times;
   const double dt = 1.0 / cfg.sim.frame_rate_hz;
   // Flight paths keep ep.clearance from mapped obstacles, or the UAV radius + 0.1 m (a point in a
-  // voxel is up to 0.087 m from its centre) where no
-  // path keeps that much (narrow doors).
+  // voxel is up to 0.087 m from its centre) where no path keeps that much (narrow doors), through
+  // space seen free; only when none does may a detour cross voxels not seen yet.
   FlightPathOptions fopt;
   fopt.clearance = ep.clearance;
   fopt.body_radius = cfg.sim.uav.radius + 0.02;
@@ -199,6 +199,14 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
       narrow.clearance = cfg.sim.uav.radius + margin;
       p = planFlightPath(mapper.graph(), mapper.grid(), a, b, narrow);
       last_clearance = narrow.clearance;
+    }
+    // Last resort, with the full margin: detours through voxels not seen yet (the flight loop
+    // drops the path as soon as the map shows it blocked).
+    if (!p) {
+      FlightPathOptions unseen = fopt;
+      unseen.detour_through_unknown = true;
+      p = planFlightPath(mapper.graph(), mapper.grid(), a, b, unseen);
+      last_clearance = unseen.clearance;
     }
     return p;
   };

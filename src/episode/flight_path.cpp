@@ -122,7 +122,10 @@ std::optional<std::vector<Vec3>> planFrom(const ConnectivityGraph& g, const Roll
         out.push_back(b);
         continue;
       }
-      auto detour = gridPath(inflated, a, b, 3.0 * (b - a).norm() + 1.0, false, 1);
+      // Inside the window the detour keeps to space the map has seen free: the unknown there is
+      // what the sensors have not looked at yet (a chair seat in the LiDAR's blind cone, the
+      // foot of a wall seen only from above), not free space.
+      auto detour = gridPath(inflated, a, b, 3.0 * (b - a).norm() + 1.0, !fo.detour_through_unknown, 1);
       if (!detour) {
         if (dbg) std::fprintf(stderr, "  path: blocked segment (%.2f %.2f %.2f)-(%.2f %.2f %.2f) no detour\n", a.x(), a.y(), a.z(), b.x(), b.y(), b.z());
         return std::nullopt;

@@ -6,9 +6,10 @@ namespace ussnav::test {
 
 void SceneFlight::frame(const BoxScene& scene, const Vec3& p, double yaw) {
   grid.moveTo(p);
-  grid.insertScan(renderScan(scene, p, 20000, -52.0, 52.0, 40.0));
-  grid.insertDepth(
-      renderDepth(scene, Intrinsics::fromFov(80, 60, deg2rad(87), deg2rad(58)), cameraPose(p, yaw), 6.0));
+  grid.insertScan(renderScan(scene, p, 20000, lidar_vmin_deg, 52.0, 40.0));
+  if (depth)
+    grid.insertDepth(
+        renderDepth(scene, Intrinsics::fromFov(80, 60, deg2rad(87), deg2rad(58)), cameraPose(p, yaw), 6.0));
   std::vector<Vec3i> occ;
   for (const VoxelChange& c : grid.changes())
     if (c.after == VoxelState::Occupied) occ.push_back(c.key);

@@ -14,6 +14,8 @@ struct SceneFlight {
   RollingGrid grid;
   ConnectivityGraph graph;
   double t = 0.0;  // simulated time of the next frame, s (10 Hz)
+  double lidar_vmin_deg = -52.0;  // lowest beam; the paper's Mid-360 starts at -7 deg
+  bool depth = true;              // insert the depth image too
 
   explicit SceneFlight(const Vec3& start) : grid(GridConfig{}, start) {}
   // One frame at `p` facing `yaw` (radians).

@@ -2,9 +2,11 @@
 // The path the UAV flies to a goal (issue 7, flight loop): A* on the connectivity graph
 // (findGraphPath, edges re-checked against the grid), then line-of-sight shortcutting in the
 // grid inflated by the UAV's clearance, then every segment that still comes closer than the
-// clearance to a known obstacle is replaced by a voxel A* path in the inflated grid (one that
-// leaves the window may cross the unknown space beyond it, re-checked when the window gets
-// there). When the graph has no path and the goal lies in the window, a voxel A*
+// clearance to a known obstacle is replaced by a voxel A* path in the inflated grid through
+// voxels seen free (one that leaves the window may cross the unknown space beyond it,
+// re-checked when the window gets there; inside the window unknown is what the sensors have not
+// looked at, such as the foot of a wall in the LiDAR's blind cone, and is not flown through
+// unless detour_through_unknown). When the graph has no path and the goal lies in the window, a voxel A*
 // through known free, inflated space is the fallback. When the UAV itself stands inside the
 // clearance margin (the map grew an obstacle next to it), the path first steps straight to the
 // nearest voxel with full clearance within 0.8 m that it can reach keeping `body_radius` from
@@ -26,6 +28,9 @@ struct FlightPathOptions {
   double body_radius = 0.27;  // the escape step keeps at least this, m
   double z_min = 0.5, z_max = 2.0;  // flight band: voxels outside it count as obstacles
   double waypoint_z_min = 0.9, waypoint_z_max = 1.5;  // graph points are clamped into this band
+  // Detours inside the window may cross unknown voxels: a last resort for the caller when no
+  // path keeps to seen-free space (the UAV boxed in by what its sensors have not seen yet).
+  bool detour_through_unknown = false;
 };
 
 std::optional<std::vector<Vec3>> planFlightPath(const ConnectivityGraph& g, const RollingGrid& grid, const Vec3& from,
