@@ -2,6 +2,7 @@
 
 #include <fstream>
 
+#include "support/input_error.hpp"
 #include "support/paths.hpp"
 #include "ussnav/core/config.hpp"
 #include "ussnav/core/error.hpp"
@@ -14,14 +15,7 @@ std::filesystem::path writeYaml(const std::string& name, const std::string& text
   std::ofstream(p) << text;
   return p;
 }
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::errorOf;
 }  // namespace
 
 TEST(Config, DefaultYamlEqualsBuiltInDefaults) {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "support/input_error.hpp"
 #include "support/paths.hpp"
 #include "ussnav/core/error.hpp"
 #include "ussnav/eval/eval_report.hpp"
@@ -31,14 +32,7 @@ EpisodeRow row(const std::string& planner, const std::string& split, bool succes
   return r;
 }
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::errorOf;
 
 }  // namespace
 

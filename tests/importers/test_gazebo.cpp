@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "support/input_error.hpp"
 #include "support/paths.hpp"
 #include "ussnav/core/config.hpp"
 #include "ussnav/core/error.hpp"
@@ -26,14 +27,7 @@ namespace {
 fs::path hospital() { return test::sharedData() / "aws_hospital"; }
 fs::path smallHouse() { return test::sharedData() / "aws_small_house"; }
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::errorOf;
 
 std::map<std::string, int> categories(const World& w) {
   std::map<std::string, int> n;

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "support/input_error.hpp"
 #include "support/paths.hpp"
 #include "ussnav/core/error.hpp"
 #include "ussnav/core/io.hpp"
@@ -42,14 +43,7 @@ bool roomsConnectedByDoors(const World& w) {
   return seen.size() == w.rooms.size();
 }
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::errorOf;
 
 class ProcthorHouse : public ::testing::TestWithParam<int> {
  protected:

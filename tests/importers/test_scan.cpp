@@ -2,6 +2,7 @@
 
 #include <fstream>
 
+#include "support/input_error.hpp"
 #include "support/paths.hpp"
 #include "ussnav/core/error.hpp"
 #include "ussnav/core/io.hpp"
@@ -15,14 +16,7 @@ namespace {
 
 fs::path freiburg(const std::string& f) { return test::sharedData() / "freiburg_octomaps" / f; }
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::errorOf;
 
 }  // namespace
 

@@ -27,13 +27,7 @@ std::string lower(std::string s) {
   return s;
 }
 
-std::string fmt(double v, int prec = 2) {
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(prec);
-  s << v;
-  return s.str();
-}
+using importers::fmt;
 
 // "aws_robomaker_residential_Bed_01" -> "Bed"; "aws_robomaker_hospital_floor_01_walls" ->
 // "floor_01_walls"; "InstrumentCart1" stays.
@@ -235,19 +229,6 @@ std::vector<std::array<Vec3, 3>> readCollada(const fs::path& file, const Mat3& R
   return out;
 }
 
-constexpr int kKeyBits = 21;
-constexpr int kKeyHalf = 1 << (kKeyBits - 1);
-uint64_t packKey(const Vec3i& c) {
-  return (uint64_t(c.x() + kKeyHalf) << (2 * kKeyBits)) | (uint64_t(c.y() + kKeyHalf) << kKeyBits) |
-         uint64_t(c.z() + kKeyHalf);
-}
-
-void sortCells(std::vector<Vec3i>& cells) {
-  std::sort(cells.begin(), cells.end(), [](const Vec3i& a, const Vec3i& b) {
-    return std::tie(a.z(), a.y(), a.x()) < std::tie(b.z(), b.y(), b.x());
-  });
-}
-
 // The dataset folder and its .world file for any accepted path; empty paths when not one.
 struct Dataset {
   fs::path root, world, table;
@@ -309,7 +290,7 @@ std::vector<Vec3i> voxeliseTriangles(const std::vector<std::array<Vec3, 3>>& tri
   for (const auto& t : triangles) {
     if (!t[0].allFinite() || !t[1].allFinite() || !t[2].allFinite()) continue;
     const Vec3 lo = t[0].cwiseMin(t[1]).cwiseMin(t[2]) / res, hi = t[0].cwiseMax(t[1]).cwiseMax(t[2]) / res;
-    if ((lo.array().abs() >= kKeyHalf - 1).any() || (hi.array().abs() >= kKeyHalf - 1).any()) continue;
+    if ((lo.array().abs() >= importers::kVoxelKeyHalf - 1).any() || (hi.array().abs() >= importers::kVoxelKeyHalf - 1).any()) continue;
     const Vec3i k0(int(std::floor(lo.x())), int(std::floor(lo.y())), int(std::floor(lo.z())));
     const Vec3i k1(int(std::floor(hi.x())), int(std::floor(hi.y())), int(std::floor(hi.z())));
     for (int z = k0.z(); z <= k1.z(); ++z)
@@ -317,10 +298,10 @@ std::vector<Vec3i> voxeliseTriangles(const std::vector<std::array<Vec3, 3>>& tri
         for (int x = k0.x(); x <= k1.x(); ++x) {
           const Vec3i c(x, y, z);
           if (!triangleOverlapsBox(t, (c.cast<double>() + Vec3::Constant(0.5)) * res, half)) continue;
-          if (seen.insert(packKey(c)).second) cells.push_back(c);
+          if (seen.insert(importers::packVoxelKey(c)).second) cells.push_back(c);
         }
   }
-  sortCells(cells);
+  importers::sortVoxels(cells);
   return cells;
 }
 
@@ -433,7 +414,7 @@ World importGazeboWorld(const fs::path& path, const ImportOptions& opt, ImportRe
       cells.emplace_back(i, j, -1);    // floor slab, top at z = 0
       cells.emplace_back(i, j, top_k);  // ceiling slab on the walls
     }
-  sortCells(cells);
+  importers::sortVoxels(cells);
   rep.notes.push_back(std::to_string(wall_tris.size()) + " wall triangles -> " + std::to_string(wall_cells) +
                       " voxels of " + fmt(res) + " m up to z = " + fmt(top_k * res) + " m; floor and ceiling slabs over " +
                       fmt((hi.x() - lo.x() + 1) * res, 1) + " x " + fmt((hi.y() - lo.y() + 1) * res, 1) + " m");

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <tuple>
 
 #include "ussnav/core/error.hpp"
 #include "ussnav/core/io.hpp"
@@ -205,6 +206,20 @@ Pose freeStartInLargestRoom(const World& w, double height, const std::string& so
   }
   pose.yaw = 0.0;
   return pose;
+}
+
+std::string fmt(double v, int prec) {
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(prec);
+  s << v;
+  return s.str();
+}
+
+void sortVoxels(std::vector<Vec3i>& cells) {
+  std::sort(cells.begin(), cells.end(), [](const Vec3i& a, const Vec3i& b) {
+    return std::tie(a.z(), a.y(), a.x()) < std::tie(b.z(), b.y(), b.x());
+  });
 }
 
 VoxelStart chooseVoxelStart(const std::vector<Vec3i>& cells, double res, double floor_z, double flight) {

@@ -3,6 +3,7 @@
 // with errors that name file, line or JSON path; category names; room/object bookkeeping;
 // choosing a collision-free start pose.
 
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -61,6 +62,19 @@ double clearanceAt(const World& w, const Vec3& p);
 // that room farthest from walls, room edges and objects. Throws InputError when the world has
 // no room.
 Pose freeStartInLargestRoom(const World& w, double height, const std::string& source);
+
+// `v` with `prec` decimals, for report notes ("1.20").
+std::string fmt(double v, int prec = 2);
+
+// Voxel keys (i, j, k) with |i|, |j|, |k| < kVoxelKeyHalf packed into one integer (for sets).
+constexpr int kVoxelKeyBits = 21;
+constexpr int kVoxelKeyHalf = 1 << (kVoxelKeyBits - 1);
+inline uint64_t packVoxelKey(const Vec3i& c) {
+  return (uint64_t(c.x() + kVoxelKeyHalf) << (2 * kVoxelKeyBits)) | (uint64_t(c.y() + kVoxelKeyHalf) << kVoxelKeyBits) |
+         uint64_t(c.z() + kVoxelKeyHalf);
+}
+// Sorts voxel keys by (z, y, x), the order the world files list them in.
+void sortVoxels(std::vector<Vec3i>& cells);
 
 // A start in a voxel world (cells at origin 0, `res` m): among cells of the 2D projection that
 // are free in the band floor+0.3 .. floor+flight+0.6 m and enclosed by occupied cells in all four

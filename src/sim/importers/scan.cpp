@@ -133,12 +133,8 @@ size_t walkNodes(const std::string& b, const OctreeHeader& h, const std::string&
 
 // ---- voxels ----------------------------------------------------------------------------------
 
-constexpr int kKeyBits = 21;
-constexpr int kKeyHalf = 1 << (kKeyBits - 1);
-uint64_t packKey(const Vec3i& c) {
-  return (uint64_t(c.x() + kKeyHalf) << (2 * kKeyBits)) | (uint64_t(c.y() + kKeyHalf) << kKeyBits) |
-         uint64_t(c.z() + kKeyHalf);
-}
+using importers::kVoxelKeyHalf;
+using importers::packVoxelKey;
 
 std::vector<Vec3i> voxelise(const std::vector<Vec3f>& pts, double res, const std::string& file) {
   std::unordered_set<uint64_t> seen;
@@ -146,14 +142,12 @@ std::vector<Vec3i> voxelise(const std::vector<Vec3f>& pts, double res, const std
   std::vector<Vec3i> cells;
   for (const auto& p : pts) {
     const Vec3 q = p.cast<double>() / res;
-    if ((q.array().abs() >= kKeyHalf - 1).any())
+    if ((q.array().abs() >= kVoxelKeyHalf - 1).any())
       throw InputError(file, "points", "a point lies too far from the origin for the voxel grid");
     const Vec3i c(int(std::floor(q.x())), int(std::floor(q.y())), int(std::floor(q.z())));
-    if (seen.insert(packKey(c)).second) cells.push_back(c);
+    if (seen.insert(packVoxelKey(c)).second) cells.push_back(c);
   }
-  std::sort(cells.begin(), cells.end(), [](const Vec3i& a, const Vec3i& b) {
-    return std::tie(a.z(), a.y(), a.x()) < std::tie(b.z(), b.y(), b.x());
-  });
+  importers::sortVoxels(cells);
   return cells;
 }
 
@@ -186,13 +180,7 @@ double detectFloor(const std::vector<Vec3i>& cells, double res, int* layer_count
   return *found ? (best_k + 1) * res : lowest * res;
 }
 
-std::string fmt(double v, int prec = 2) {
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(prec);
-  s << v;
-  return s.str();
-}
+using importers::fmt;
 
 }  // namespace
 
@@ -353,7 +341,7 @@ World importScan(const fs::path& path, const ImportOptions& opt, ImportReport* r
                       std::to_string(before) + " voxels");
   // A real floor covers much of the footprint; warn when the scan has (almost) none.
   std::unordered_set<uint64_t> columns;
-  for (const auto& c : cells) columns.insert(packKey(Vec3i(c.x(), c.y(), 0)));
+  for (const auto& c : cells) columns.insert(packVoxelKey(Vec3i(c.x(), c.y(), 0)));
   if (floor_found && floor_cells < 0.2 * double(columns.size()))
     rep.warnings.push_back("the scan has little floor (" + std::to_string(floor_cells) + " floor cells under " +
                            std::to_string(columns.size()) + " occupied columns); has_floor=false leaves it open below");
