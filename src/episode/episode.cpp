@@ -139,26 +139,16 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
   // The margin of the last path flightPath found, and of the path being flown: the blocked-path
   // checks use it, so a path planned through a narrow door is not dropped as blocked at once.
   double last_clearance = fopt.clearance, path_clearance = fopt.clearance;
-  auto flightPath = [&](const Vec3& a, const Vec3& b) {
-    last_clearance = fopt.clearance;
-    auto p = planFlightPath(mapper.graph(), mapper.grid(), a, b, fopt);
-    // Narrower margins when the full one finds no way (doors of real houses are 0.8-0.9 m wide).
-    for (const double margin : {0.1, 0.05}) {
-      if (p || ep.clearance <= cfg.sim.uav.radius + margin) continue;
-      FlightPathOptions narrow = fopt;
-      narrow.clearance = cfg.sim.uav.radius + margin;
-      p = planFlightPath(mapper.graph(), mapper.grid(), a, b, narrow);
-      last_clearance = narrow.clearance;
-    }
-    // Last resort, with the full margin: detours through voxels not seen yet (the flight loop
-    // drops the path as soon as the map shows it blocked).
-    if (!p) {
-      FlightPathOptions unseen = fopt;
-      unseen.detour_through_unknown = true;
-      p = planFlightPath(mapper.graph(), mapper.grid(), a, b, unseen);
-      last_clearance = unseen.clearance;
-    }
-    return p;
+  // Margins of the flight-path ladder: the full clearance, then narrower ones (doors of real
+  // buildings are 0.8-0.9 m wide); each through seen-free space, then again through unseen voxels.
+  std::vector<double> clearances{ep.clearance};
+  for (const double margin : {0.1, 0.05})
+    if (ep.clearance > cfg.sim.uav.radius + margin) clearances.push_back(cfg.sim.uav.radius + margin);
+  auto flightPath = [&](const Vec3& a, const Vec3& b) -> std::optional<std::vector<Vec3>> {
+    auto plan = planFlightPathLadder(mapper.graph(), mapper.grid(), a, b, fopt, clearances);
+    if (!plan) return std::nullopt;
+    last_clearance = plan->clearance;
+    return std::move(plan->path);
   };
 
   Goal g;

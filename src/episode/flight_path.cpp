@@ -157,4 +157,17 @@ std::optional<std::vector<Vec3>> planFlightPath(const ConnectivityGraph& g, cons
   return rest;
 }
 
+std::optional<FlightPlan> planFlightPathLadder(const ConnectivityGraph& g, const RollingGrid& grid, const Vec3& from,
+                                               const Vec3& to, const FlightPathOptions& opt,
+                                               std::span<const double> clearances) {
+  for (const bool unknown : {false, true})
+    for (const double c : clearances) {
+      FlightPathOptions o = opt;
+      o.clearance = c;
+      o.detour_through_unknown = unknown;
+      if (auto p = planFlightPath(g, grid, from, to, o)) return FlightPlan{std::move(*p), c, unknown};
+    }
+  return std::nullopt;
+}
+
 }  // namespace ussnav

@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <vector>
 
 #include "support/scene_flight.hpp"
 #include "ussnav/episode/flight_path.hpp"
@@ -106,4 +108,76 @@ TEST(FlightPath, DetoursInsideTheWindowKeepToSpaceSeenFree) {
       EXPECT_EQ(planned, goals);
     }
   }
+}
+
+TEST(FlightPath, LadderPassesANarrowDoorIntoForgottenSpace) {
+  // A room (y < 6.0) and a corridor (y 6.2-8.2) joined by a 0.8 m door at x = 6.18-6.98 next to
+  // the room's east wall. The UAV comes down the corridor and through the door, flies into the
+  // room's far corner, where the rolling window forgets the corridor, and comes back 2.5 m west
+  // of the door: the door's jambs are mapped again, the corridor beyond them is not (AWS
+  // hospital, "sofa": the UAV boxed in a ward ended the episode "explored"). The connectivity
+  // graph still knows the corridor.
+  test::BoxScene s;
+  auto box = [&](double x0, double y0, double z0, double x1, double y1, double z1) {
+    s.solids.push_back(Aabb(Vec3(x0, y0, z0), Vec3(x1, y1, z1)));
+  };
+  box(-0.5, -0.5, -0.2, 14.5, 8.6, 0.0);   // floor
+  box(-0.5, -0.5, 2.7, 14.5, 8.6, 2.9);    // ceiling
+  box(-0.2, -0.2, 0.0, 7.2, 0.0, 2.7);     // room, south wall
+  box(-0.2, 0.0, 0.0, 0.0, 6.0, 2.7);      // room, west wall
+  box(6.98, 0.0, 0.0, 7.18, 6.0, 2.7);     // room, east wall
+  box(-0.2, 6.0, 0.0, 6.18, 6.2, 2.7);     // wall west of the door
+  box(6.98, 6.0, 0.0, 14.2, 6.2, 2.7);     // wall east of the door (the corridor's south wall)
+  box(-0.2, 8.2, 0.0, 14.2, 8.4, 2.7);     // corridor, north wall
+  box(-0.4, 6.2, 0.0, -0.2, 8.2, 2.7);     // corridor, west end
+  box(14.0, 6.2, 0.0, 14.2, 8.2, 2.7);     // corridor, east end
+  const double z = 1.2;
+  test::SceneFlight f(Vec3(12.0, 7.2, z));
+  auto fly = [&](const Vec3& a, const Vec3& b, double yaw) {
+    const int n = int(std::ceil((b - a).norm() / 0.25));
+    for (int i = 0; i <= n; ++i) f.frame(s, a + (b - a) * (double(i) / n), yaw);
+  };
+  fly(Vec3(12.0, 7.2, z), Vec3(6.58, 7.2, z), kPi);
+  fly(Vec3(6.58, 7.2, z), Vec3(6.58, 4.5, z), -0.5 * kPi);
+  fly(Vec3(6.58, 4.5, z), Vec3(2.0, 1.0, z), -0.75 * kPi);
+  const Vec3 back(4.0, 4.9, z);
+  fly(Vec3(2.0, 1.0, z), back, 0.6);
+  const Vec3 goal(12.0, 7.2, z);
+  ASSERT_EQ(f.grid.stateAt(Vec3(6.05, 6.1, z)), VoxelState::Occupied);  // the west jamb, mapped again
+  ASSERT_EQ(f.grid.stateAt(Vec3(6.58, 7.0, z)), VoxelState::Unknown);   // the corridor beyond, forgotten
+  ASSERT_GT(f.graph.size(), 0u);
+
+  // Through seen-free space no margin passes; the old last resort (full margin, through unseen
+  // voxels) does not either: the inflated jambs shut the door.
+  const std::vector<double> clearances{0.4, 0.35, 0.3};
+  FlightPathOptions opt;
+  for (const bool unknown : {false, true})
+    for (const double c : clearances) {
+      opt.clearance = c;
+      opt.detour_through_unknown = unknown;
+      if (unknown && c < 0.4) continue;
+      EXPECT_FALSE(planFlightPath(f.graph, f.grid, back, goal, opt).has_value()) << "clearance " << c;
+    }
+
+  const std::optional<FlightPlan> plan = planFlightPathLadder(f.graph, f.grid, back, goal, FlightPathOptions{}, clearances);
+  ASSERT_TRUE(plan.has_value());
+  EXPECT_DOUBLE_EQ(plan->clearance, 0.3);
+  EXPECT_TRUE(plan->through_unknown);
+  const InflatedMap inflated(f.grid, plan->clearance, opt.z_min, opt.z_max);
+  bool through_door = false;
+  for (size_t i = 1; i < plan->path.size(); ++i) {
+    const Vec3 &a = plan->path[i - 1], &b = plan->path[i];
+    EXPECT_FALSE(castRay(inflated, a, b, false).blocked) << "segment " << i << " crosses the inflated map";
+    const int n = int(std::ceil((b - a).norm() / 0.05));
+    for (int k = 0; k <= n; ++k) {
+      const Vec3 q = a + (b - a) * (double(k) / n);
+      double d = 1e9;  // to the nearest true solid
+      for (const Aabb& box : s.solids) d = std::min(d, (q - q.cwiseMax(box.min).cwiseMin(box.max)).norm());
+      ASSERT_GE(d, 0.25) << "the path passes " << d << " m from a wall at (" << q.transpose() << ")";
+      if (q.y() > 6.0 && q.y() < 6.2) through_door = true;
+    }
+  }
+  EXPECT_TRUE(through_door);
+  EXPECT_NEAR(plan->path.back().x(), goal.x(), 0.6);
+  EXPECT_NEAR(plan->path.back().y(), goal.y(), 0.6);
 }

@@ -16,6 +16,7 @@
 // where doors and furniture leave the most room).
 
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "ussnav/mapping/rolling_grid.hpp"
@@ -35,5 +36,22 @@ struct FlightPathOptions {
 
 std::optional<std::vector<Vec3>> planFlightPath(const ConnectivityGraph& g, const RollingGrid& grid, const Vec3& from,
                                                 const Vec3& to, const FlightPathOptions& opt);
+
+// A path and how it was found.
+struct FlightPlan {
+  std::vector<Vec3> path;
+  double clearance = 0.0;         // the margin it keeps from mapped obstacles, m
+  bool through_unknown = false;   // a detour inside the window crosses voxels not seen yet
+};
+
+// The flight loop's attempts, in order: planFlightPath at each of `clearances` (widest first:
+// doors of real buildings are 0.8-0.9 m wide) keeping detours to space seen free; then, as the
+// last resort, the same clearances again with detours through unseen voxels (opt's own
+// clearance and detour_through_unknown are overridden). Both rounds go to the narrowest margin:
+// beyond a narrow door that the rolling window has forgotten, only the narrowest margin passes
+// the door and only unseen voxels lead on. nullopt when every attempt fails.
+std::optional<FlightPlan> planFlightPathLadder(const ConnectivityGraph& g, const RollingGrid& grid, const Vec3& from,
+                                               const Vec3& to, const FlightPathOptions& opt,
+                                               std::span<const double> clearances);
 
 }  // namespace ussnav
