@@ -148,6 +148,9 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
     auto plan = planFlightPathLadder(mapper.graph(), mapper.grid(), a, b, fopt, clearances);
     if (!plan) return std::nullopt;
     last_clearance = plan->clearance;
+    ++R.paths_planned;
+    if (plan->clearance < ep.clearance) ++R.paths_narrow;
+    if (plan->through_unknown) ++R.paths_through_unknown;
     return std::move(plan->path);
   };
 

@@ -69,6 +69,9 @@ struct EpisodeResult {
   bool multi_room = false;         // no goal instance in the start room
   int replans = 0, unreachable = 0;
   int close_looks = 0;  // frontiers reached but still open, tried again from nearer (episode.close_look)
+  // Flight paths planned, and how many of them needed a margin narrower than episode.clearance
+  // or (the last resort) a detour through voxels not seen yet (planFlightPathLadder).
+  int paths_planned = 0, paths_narrow = 0, paths_through_unknown = 0;
   double update_hz = 0.0;          // 1000 / median per-frame scene-graph update (ms)
   nlohmann::json stage_ms;         // {stage: {median, p95, count}}
   std::vector<CoverageSample> coverage;  // every 5 s
