@@ -23,15 +23,11 @@ TEST(FlightPath, NoSegmentCrossesAnObstacleNearTheWindowEdge) {
   scene.solids.push_back(Aabb(Vec3(6.6, -1.6, 0.0), Vec3(6.8, 0.1, 2.7)));
   scene.solids.push_back(Aabb(Vec3(6.6, 1.0, 0.0), Vec3(6.8, 1.6, 2.7)));
   test::SceneFlight f(Vec3(1, 0, 1.2));
-  auto fly = [&](const Vec3& a, const Vec3& b, double yaw) {
-    const int n = int(std::ceil((b - a).norm() / 0.25));
-    for (int i = 0; i <= n; ++i) f.frame(scene, a + (b - a) * (double(i) / n), yaw);
-  };
-  fly(Vec3(1, 0, 1.2), Vec3(6, 0.55, 1.2), 0.0);
-  fly(Vec3(6, 0.55, 1.2), Vec3(7.4, 0.55, 1.2), 0.0);
-  fly(Vec3(7.4, 0.55, 1.2), Vec3(13, 0, 1.2), 0.0);
-  fly(Vec3(13, 0, 1.2), Vec3(7.4, 0.55, 1.2), kPi);
-  fly(Vec3(7.4, 0.55, 1.2), Vec3(3, 0, 1.2), kPi);
+  f.fly(scene, Vec3(1, 0, 1.2), Vec3(6, 0.55, 1.2), 0.0);
+  f.fly(scene, Vec3(6, 0.55, 1.2), Vec3(7.4, 0.55, 1.2), 0.0);
+  f.fly(scene, Vec3(7.4, 0.55, 1.2), Vec3(13, 0, 1.2), 0.0);
+  f.fly(scene, Vec3(13, 0, 1.2), Vec3(7.4, 0.55, 1.2), kPi);
+  f.fly(scene, Vec3(7.4, 0.55, 1.2), Vec3(3, 0, 1.2), kPi);
   for (int i = 0; i < 4; ++i) f.frame(scene, Vec3(3, 0, 1.2), 0.0);
   ASSERT_TRUE(f.grid.inWindow(f.grid.keyOf(Vec3(6.9, 0.5, 1.2))));
   ASSERT_FALSE(f.grid.inWindow(f.grid.keyOf(Vec3(7.2, 0.5, 1.2))));
@@ -133,15 +129,11 @@ TEST(FlightPath, LadderPassesANarrowDoorIntoForgottenSpace) {
   box(14.0, 6.2, 0.0, 14.2, 8.2, 2.7);     // corridor, east end
   const double z = 1.2;
   test::SceneFlight f(Vec3(12.0, 7.2, z));
-  auto fly = [&](const Vec3& a, const Vec3& b, double yaw) {
-    const int n = int(std::ceil((b - a).norm() / 0.25));
-    for (int i = 0; i <= n; ++i) f.frame(s, a + (b - a) * (double(i) / n), yaw);
-  };
-  fly(Vec3(12.0, 7.2, z), Vec3(6.58, 7.2, z), kPi);
-  fly(Vec3(6.58, 7.2, z), Vec3(6.58, 4.5, z), -0.5 * kPi);
-  fly(Vec3(6.58, 4.5, z), Vec3(2.0, 1.0, z), -0.75 * kPi);
+  f.fly(s, Vec3(12.0, 7.2, z), Vec3(6.58, 7.2, z), kPi);
+  f.fly(s, Vec3(6.58, 7.2, z), Vec3(6.58, 4.5, z), -0.5 * kPi);
+  f.fly(s, Vec3(6.58, 4.5, z), Vec3(2.0, 1.0, z), -0.75 * kPi);
   const Vec3 back(4.0, 4.9, z);
-  fly(Vec3(2.0, 1.0, z), back, 0.6);
+  f.fly(s, Vec3(2.0, 1.0, z), back, 0.6);
   const Vec3 goal(12.0, 7.2, z);
   ASSERT_EQ(f.grid.stateAt(Vec3(6.05, 6.1, z)), VoxelState::Occupied);  // the west jamb, mapped again
   ASSERT_EQ(f.grid.stateAt(Vec3(6.58, 7.0, z)), VoxelState::Unknown);   // the corridor beyond, forgotten

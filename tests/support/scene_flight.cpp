@@ -1,5 +1,7 @@
 #include "support/scene_flight.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace ussnav::test {
@@ -16,6 +18,11 @@ void SceneFlight::frame(const BoxScene& scene, const Vec3& p, double yaw) {
   graph.update(grid, p, t, occ);
   grid.clearChanges();
   t += 0.1;
+}
+
+void SceneFlight::fly(const BoxScene& scene, const Vec3& a, const Vec3& b, double yaw) {
+  const int n = std::max(1, int(std::ceil((b - a).norm() / 0.25)));
+  for (int i = 0; i <= n; ++i) frame(scene, a + (b - a) * (double(i) / n), yaw);
 }
 
 }  // namespace ussnav::test

@@ -20,6 +20,8 @@ struct SceneFlight {
   explicit SceneFlight(const Vec3& start) : grid(GridConfig{}, start) {}
   // One frame at `p` facing `yaw` (radians).
   void frame(const BoxScene& scene, const Vec3& p, double yaw);
+  // Frames every 0.25 m (or less) along the straight line a -> b, both ends included.
+  void fly(const BoxScene& scene, const Vec3& a, const Vec3& b, double yaw);
 };
 
 }  // namespace ussnav::test
