@@ -65,6 +65,8 @@ void runExplore(const ExploreArgs& a) {
   std::printf("  scene graph: %zu nodes, %zu regions, %zu objects; camera saw %.0f of %.0f m^2 known\n",
               run.graph.nodes.size(), run.graph.regions.size(), run.graph.objects.size(),
               r.coverage.empty() ? 0.0 : r.coverage.back().camera_seen_m2, r.coverage.empty() ? 0.0 : r.coverage.back().known_m2);
+  if (r.labels_scored > 0)
+    std::printf("  region labels (against ground truth): %d of %d correct\n", r.labels_correct, r.labels_scored);
   std::printf("  per-frame update: median %.2f ms (%.0f Hz), wall %.1f s\n", 1000.0 / std::max(r.update_hz, 1e-9),
               r.update_hz, r.wall_s);
   std::printf("wrote %s/result.json, scene_graph.json, trajectory.csv, topdown.png\n", a.out.c_str());

@@ -17,6 +17,7 @@
 #include "ussnav/episode/goal.hpp"
 #include "ussnav/eval/metrics.hpp"
 #include "ussnav/eval/region_oracle.hpp"
+#include "ussnav/eval/scene_quality.hpp"
 #include "ussnav/exploration/camera_coverage.hpp"
 #include "ussnav/exploration/frontier.hpp"
 #include "ussnav/exploration/graph_costs.hpp"
@@ -641,6 +642,12 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
     const auto sem = labeler->semantics();
     for (SgRegion& r : run.graph.regions)
       if (auto it = sem.find(r.id); it != sem.end()) r.label = it->second.label, r.description = it->second.description;
+    const RegionLabelQuality lq =
+        regionLabelQuality(run.graph, sim.world(), [&](const std::string& name) { return priors->roomIndex(name); });
+    R.labels_scored = lq.scored;
+    R.labels_correct = lq.correct;
+    R.region_labels = {{"regions", lq.regions}, {"labelled", lq.labelled}, {"scored", lq.scored},
+                       {"correct", lq.correct}, {"accuracy", lq.accuracy}, {"confusions", lq.confusions}};
   }
   R.reasoner_fallbacks = decider ? decider->stats().fallbacks : 0;
   run.topdown = drawEpisode(spec.world, run, camera, truth.instances, start);

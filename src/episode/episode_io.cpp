@@ -39,6 +39,7 @@ nlohmann::json toJson(const EpisodeResult& r) {
   j["stage_ms"] = r.stage_ms;
   j["reasoning"] = r.reasoning;
   j["reasoner_fallbacks"] = r.reasoner_fallbacks;
+  j["region_labels"] = r.region_labels.is_null() ? nlohmann::json::object() : r.region_labels;
   nlohmann::json cov = nlohmann::json::array();
   for (const CoverageSample& c : r.coverage) cov.push_back({{"t", c.t}, {"known_m2", c.known_m2}, {"camera_seen_m2", c.camera_seen_m2}});
   j["coverage"] = cov;

@@ -31,7 +31,11 @@ std::vector<std::string> split(const std::string& line) {
   return out;
 }
 
-constexpr int kColumns = 16;
+constexpr int kColumns = 18;
+constexpr int kColumnsBefore = 16;  // episodes.csv before the region-label columns
+const char* const kHeaderBefore =
+    "world,goal,planner,seed,split,success,spl,path_length_m,shortest_path_m,time_s,frames,collisions,end_reason,"
+    "found_label,update_hz,wall_s";
 
 }  // namespace
 
@@ -45,20 +49,22 @@ EpisodeRow rowOf(const EpisodeResult& r) {
   w.time_s = r.time_s, w.frames = r.frames, w.collisions = r.collisions, w.end_reason = r.end_reason;
   w.found_label = r.found_object ? r.found_object->label : "";
   w.update_hz = r.update_hz, w.wall_s = r.wall_s;
+  w.labels_scored = r.labels_scored, w.labels_correct = r.labels_correct;
   return w;
 }
 
 std::string csvHeader() {
   return "world,goal,planner,seed,split,success,spl,path_length_m,shortest_path_m,time_s,frames,collisions,end_reason,"
-         "found_label,update_hz,wall_s";
+         "found_label,update_hz,wall_s,labels_scored,labels_correct";
 }
 
 std::string toCsv(const EpisodeRow& r) {
   char buf[512];
-  std::snprintf(buf, sizeof buf, "%s,%s,%s,%llu,%s,%d,%.4f,%.3f,%.3f,%.2f,%d,%d,%s,%s,%.1f,%.2f", clean(r.world).c_str(),
-                clean(r.goal).c_str(), clean(r.planner).c_str(), static_cast<unsigned long long>(r.seed), r.split.c_str(),
-                int(r.success), r.spl, r.path_length_m, r.shortest_path_m, r.time_s, r.frames, r.collisions,
-                clean(r.end_reason).c_str(), clean(r.found_label).c_str(), r.update_hz, r.wall_s);
+  std::snprintf(buf, sizeof buf, "%s,%s,%s,%llu,%s,%d,%.4f,%.3f,%.3f,%.2f,%d,%d,%s,%s,%.1f,%.2f,%d,%d",
+                clean(r.world).c_str(), clean(r.goal).c_str(), clean(r.planner).c_str(),
+                static_cast<unsigned long long>(r.seed), r.split.c_str(), int(r.success), r.spl, r.path_length_m,
+                r.shortest_path_m, r.time_s, r.frames, r.collisions, clean(r.end_reason).c_str(),
+                clean(r.found_label).c_str(), r.update_hz, r.wall_s, r.labels_scored, r.labels_correct);
   return buf;
 }
 
@@ -72,11 +78,11 @@ std::vector<EpisodeRow> readEpisodesCsv(const std::filesystem::path& path, int* 
   while (std::getline(in, line)) {
     if (header) {
       header = false;
-      if (line == csvHeader()) continue;
+      if (line == csvHeader() || line == kHeaderBefore) continue;
     }
     const auto f = split(line);
     try {
-      if (int(f.size()) != kColumns) throw std::invalid_argument("columns");
+      if (int(f.size()) != kColumns && int(f.size()) != kColumnsBefore) throw std::invalid_argument("columns");
       EpisodeRow r;
       r.world = f[0], r.goal = f[1], r.planner = f[2], r.seed = std::stoull(f[3]), r.split = f[4];
       if (r.split != "single_room" && r.split != "multi_room") throw std::invalid_argument("split");
@@ -84,6 +90,7 @@ std::vector<EpisodeRow> readEpisodesCsv(const std::filesystem::path& path, int* 
       r.shortest_path_m = std::stod(f[8]), r.time_s = std::stod(f[9]), r.frames = std::stoi(f[10]);
       r.collisions = std::stoi(f[11]), r.end_reason = f[12], r.found_label = f[13], r.update_hz = std::stod(f[14]);
       r.wall_s = std::stod(f[15]);
+      if (int(f.size()) == kColumns) r.labels_scored = std::stoi(f[16]), r.labels_correct = std::stoi(f[17]);
       rows.push_back(r);
     } catch (const std::exception&) {
       if (bad) ++*bad;
@@ -175,6 +182,15 @@ nlohmann::json summaryJson(const std::vector<EpisodeRow>& rows) {
                            {"time_s", s.time_s}, {"collisions", s.collisions}};
     }
   }
+  std::map<std::string, std::pair<int, int>> labels;  // planner -> scored, correct
+  for (const EpisodeRow& r : rows) {
+    labels[r.planner].first += r.labels_scored;
+    labels[r.planner].second += r.labels_correct;
+  }
+  for (const auto& [planner, sc] : labels)
+    if (sc.first > 0)
+      j[planner]["region_labels"] = {
+          {"scored", sc.first}, {"correct", sc.second}, {"accuracy", double(sc.second) / double(sc.first)}};
   return j;
 }
 
@@ -195,11 +211,26 @@ std::string summaryMarkdown(const std::vector<EpisodeRow>& rows, const std::stri
     }
     md << "\n";
   }
+  bool any_labels = false;
+  for (auto it = j.begin(); it != j.end(); ++it) any_labels = any_labels || it.value().contains("region_labels");
+  if (any_labels) {
+    md << "## region labels\n\n| planner | regions scored | correct | accuracy |\n|---|---:|---:|---:|\n";
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      if (!it.value().contains("region_labels")) continue;
+      const auto& l = it.value()["region_labels"];
+      char line[160];
+      std::snprintf(line, sizeof line, "| %s | %d | %d | %.3f |\n", it.key().c_str(), l["scored"].get<int>(),
+                    l["correct"].get<int>(), l["accuracy"].get<double>());
+      md << line;
+    }
+    md << "\n";
+  }
   pairedMarkdown(rows, md);
   md << "SR: success rate; SPL = S * L* / max(L, L*) averaged over episodes (DESIGN.md); single_room: a goal "
         "instance is in the start room; multi_room: none is; long_horizon: multi_room with L* >= "
      << kLongHorizonM << " m; ratio: SPL of the planner over SPL of frontier on the same episodes; same: within "
-     << kSameSpl << " SPL.\n";
+     << kSameSpl << " SPL; region labels: the final regions' room labels against the room holding most of each "
+        "region's nodes (ground truth), over regions whose room type the reasoner can name.\n";
   return md.str();
 }
 

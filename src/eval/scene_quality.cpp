@@ -30,6 +30,41 @@ RegionQuality regionQuality(const SceneGraph& g, const World& world) {
   return q;
 }
 
+RegionLabelQuality regionLabelQuality(const SceneGraph& g, const World& world,
+                                      const std::function<int(const std::string&)>& room_index) {
+  RegionLabelQuality q;
+  std::unordered_map<int, const SgNode*> node;
+  for (const SgNode& n : g.nodes) node[n.id] = &n;
+  std::unordered_map<int, const Room*> room_by_id;
+  for (const Room& r : world.rooms) room_by_id[r.id] = &r;
+  for (const SgRegion& r : g.regions) {
+    std::map<int, int> votes;  // room id -> nodes
+    for (int id : r.nodes) {
+      const auto it = node.find(id);
+      if (it == node.end()) continue;
+      if (const Room* room = world.roomAt(Vec2(it->second->centroid.x(), it->second->centroid.y()))) ++votes[room->id];
+    }
+    if (votes.empty()) continue;
+    ++q.regions;
+    if (r.label.empty()) continue;
+    ++q.labelled;
+    int best = -1, best_n = 0;
+    for (const auto& [room, n] : votes)
+      if (n > best_n) best = room, best_n = n;
+    const std::string& truth = room_by_id.at(best)->type;
+    const int want = room_index(truth);
+    if (want < 0) continue;
+    ++q.scored;
+    if (room_index(r.label) == want) {
+      ++q.correct;
+    } else {
+      ++q.confusions[r.label + " <- " + truth];
+    }
+  }
+  q.accuracy = q.scored > 0 ? double(q.correct) / q.scored : 0.0;
+  return q;
+}
+
 ObjectQuality objectQuality(const std::vector<SgObject>& mapped, const World& world, const std::set<int>& seen,
                             const TextEncoder* encoder, const ObjectMatchOptions& opt) {
   ObjectQuality q;

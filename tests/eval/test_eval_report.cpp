@@ -90,6 +90,36 @@ TEST(EvalReport, CsvRoundTripAndCutLinesAreSkipped) {
   EXPECT_EQ(rows[0].found_label, "bed  king size");
 }
 
+TEST(EvalReport, RegionLabelColumnsRoundTripAndOldFilesStillLoad) {
+  EpisodeRow a = row("full", "multi_room", true, 0.4, 12.5);
+  a.labels_scored = 7, a.labels_correct = 3;
+  const std::string old_header =
+      "world,goal,planner,seed,split,success,spl,path_length_m,shortest_path_m,time_s,frames,collisions,end_reason,"
+      "found_label,update_hz,wall_s";
+  const std::string old_row = "w,tv,frontier,1,single_room,1,0.5000,4.000,2.000,8.00,80,0,found,tv,50.0,1.00";
+  int bad = 0;
+  const auto rows = readEpisodesCsv(writeText("labels.csv", csvHeader() + "\n" + toCsv(a) + "\n"), &bad);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(bad, 0);
+  EXPECT_EQ(rows[0].labels_scored, 7);
+  EXPECT_EQ(rows[0].labels_correct, 3);
+  const auto old = readEpisodesCsv(writeText("old.csv", old_header + "\n" + old_row + "\n"), &bad);
+  ASSERT_EQ(old.size(), 1u);
+  EXPECT_EQ(bad, 0);
+  EXPECT_EQ(old[0].labels_scored, 0);
+  EXPECT_NEAR(old[0].spl, 0.5, 1e-9);
+
+  EpisodeRow b = row("full", "single_room", true, 0.2, 9.0);
+  b.labels_scored = 3, b.labels_correct = 3;
+  const auto j = summaryJson({a, b, row("frontier", "multi_room", true, 0.3, 10)});
+  EXPECT_EQ(j["full"]["region_labels"]["scored"].get<int>(), 10);
+  EXPECT_EQ(j["full"]["region_labels"]["correct"].get<int>(), 6);
+  EXPECT_NEAR(j["full"]["region_labels"]["accuracy"].get<double>(), 0.6, 1e-12);
+  EXPECT_FALSE(j["frontier"].contains("region_labels"));
+  const std::string md = summaryMarkdown({a, b}, "t");
+  EXPECT_NE(md.find("| full | 10 | 6 | 0.600 |"), std::string::npos) << md;
+}
+
 TEST(EvalReport, SummaryMatchesHandComputation) {
   const std::vector<EpisodeRow> rows = {row("frontier", "single_room", true, 0.5, 10), row("frontier", "multi_room", false, 0, 30),
                                         row("frontier", "multi_room", true, 0.25, 20), row("full", "multi_room", true, 1.0, 5)};

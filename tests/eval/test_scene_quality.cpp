@@ -44,6 +44,44 @@ TEST(SceneQuality, RegionPurityAndAriAgainstRooms) {
   EXPECT_NEAR(q.ari, 1.2 / 3.7, 1e-12);
 }
 
+TEST(SceneQuality, RegionLabelsAgainstTheRoomHoldingMostNodes) {
+  World w = test::twoRooms();  // room 1 "office" = [0,5]x[0,4], room 2 "kitchen" = [5,10]x[0,4]
+  Room storage;
+  storage.id = 3;
+  storage.type = "storage";
+  storage.polygon = {Vec2(10, 0), Vec2(14, 0), Vec2(14, 4), Vec2(10, 4)};
+  w.rooms.push_back(storage);
+  SceneGraph g;
+  const std::vector<double> xs = {1, 2, 3, 6, 7, 8, 4, 11, 12, 20};
+  for (size_t i = 0; i < xs.size(); ++i) g.nodes.push_back({int(i), Vec3(xs[i], 2.0, 1.0), 1.0, {}, 0.0});
+  g.regions.push_back({0, {0, 1, 2}, "study", "", Vec3::Zero(), {}});        // office: right (an alias)
+  g.regions.push_back({1, {3, 4, 5, 6}, "bathroom", "", Vec3::Zero(), {}});  // 3 of 4 in the kitchen: wrong
+  g.regions.push_back({2, {7, 8}, "kitchen", "", Vec3::Zero(), {}});         // storage: not nameable
+  g.regions.push_back({3, {9}, "kitchen", "", Vec3::Zero(), {}});            // outside every room
+  g.regions.push_back({4, {}, "", "", Vec3::Zero(), {}});                    // no node
+  SceneGraph unlabelled = g;
+  unlabelled.regions[0].label.clear();
+  const auto index = [](const std::string& n) {
+    if (n == "office" || n == "study") return 0;
+    if (n == "kitchen") return 1;
+    if (n == "bathroom") return 2;
+    return -1;
+  };
+  const RegionLabelQuality q = regionLabelQuality(g, w, index);
+  EXPECT_EQ(q.regions, 3);
+  EXPECT_EQ(q.labelled, 3);
+  EXPECT_EQ(q.scored, 2);
+  EXPECT_EQ(q.correct, 1);
+  EXPECT_NEAR(q.accuracy, 0.5, 1e-12);
+  ASSERT_EQ(q.confusions.size(), 1u);
+  EXPECT_EQ(q.confusions.at("bathroom <- kitchen"), 1);
+  const RegionLabelQuality u = regionLabelQuality(unlabelled, w, index);
+  EXPECT_EQ(u.labelled, 2);
+  EXPECT_EQ(u.scored, 1);
+  EXPECT_EQ(u.correct, 0);
+  EXPECT_NEAR(u.accuracy, 0.0, 1e-12);
+}
+
 TEST(SceneQuality, ObjectPrecisionRecallDuplicates) {
   World w = test::twoRooms();
   const int chair = test::addObject(w, "chair", Vec3(1, 1, 0.45), Vec3(0.3, 0.3, 0.45));

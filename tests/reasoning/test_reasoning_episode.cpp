@@ -55,6 +55,10 @@ TEST(ReasoningEpisode, FreeTextInstructionFindsTheBed) {
   // (bed and nightstand; the start room may be left before its fridge and stove are seen).
   const auto sem = graphSemantics(run.graph, nullptr);
   EXPECT_EQ(sem.at(regionAt(run.graph, Vec3(8.6, 3.0, 1.2))).label, "bedroom");
+  // ... and the evaluation scores it against the world's rooms (result.json region_labels).
+  EXPECT_GE(r.labels_correct, 1);
+  EXPECT_EQ(r.region_labels["correct"].get<int>(), r.labels_correct);
+  EXPECT_EQ(r.region_labels["scored"].get<int>(), r.labels_scored);
 }
 
 TEST(ReasoningEpisode, MisleadingGroundTruthRoomLabelsChangeNothing) {
@@ -67,6 +71,8 @@ TEST(ReasoningEpisode, MisleadingGroundTruthRoomLabelsChangeNothing) {
   EXPECT_EQ(a.replans, b.replans);
   EXPECT_EQ(a.reasoning["decisions"], b.reasoning["decisions"]);
   EXPECT_EQ(a.success, b.success);
+  // Only the evaluation reads the room types: the same labels now score worse.
+  EXPECT_GT(a.labels_correct, b.labels_correct);
 }
 
 TEST(ReasoningEpisode, OracleReasonerDrivesTheFullPlannerInAnEpisode) {

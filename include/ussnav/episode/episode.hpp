@@ -77,6 +77,10 @@ struct EpisodeResult {
   std::vector<CoverageSample> coverage;  // every 5 s
   nlohmann::json reasoning = nlohmann::json::object();  // instruction, reasoner decisions, faults
   int reasoner_fallbacks = 0;      // coarse decisions answered by global utility after a fault
+  // Ground truth (evaluation only): the final regions' labels against the rooms they cover
+  // (regionLabelQuality); empty without a reasoner or a world with room types.
+  nlohmann::json region_labels;
+  int labels_scored = 0, labels_correct = 0;
   double wall_s = 0.0;
 };
 

@@ -24,6 +24,7 @@ struct EpisodeRow {
   bool success = false;
   double spl = 0, path_length_m = 0, shortest_path_m = -1, time_s = 0, update_hz = 0, wall_s = 0;
   int frames = 0, collisions = 0;
+  int labels_scored = 0, labels_correct = 0;  // region labels against ground truth (EpisodeResult)
   std::string key() const;  // world|goal|planner|seed
 };
 
@@ -39,6 +40,8 @@ std::string toCsv(const EpisodeRow& r);
 // skipped and counted in *bad. A missing file gives no rows.
 std::vector<EpisodeRow> readEpisodesCsv(const std::filesystem::path& path, int* bad = nullptr);
 
+// {planner: {split: {episodes, sr, spl, ...}, region_labels: {scored, correct, accuracy}}};
+// region_labels only for planners that label regions (labels_scored > 0 somewhere).
 nlohmann::json summaryJson(const std::vector<EpisodeRow>& rows);
 std::string summaryMarkdown(const std::vector<EpisodeRow>& rows, const std::string& title);
 

@@ -9,7 +9,10 @@
 // duplicate_rate = objects matched to an already-matched instance / matched objects (in object
 // id order). Cost: O(nodes * rooms) and O(objects * instances) plus one encode per label pair.
 
+#include <functional>
+#include <map>
 #include <set>
+#include <string>
 #include <vector>
 
 #include "ussnav/core/frame.hpp"
@@ -27,6 +30,23 @@ struct RegionQuality {
   double ari = 1.0;
 };
 RegionQuality regionQuality(const SceneGraph& g, const World& world);
+
+// Region labels (room types named by the reasoner) against the rooms they cover. A region's
+// true room is the room holding most of its nodes' centres (ties: lower room id); regions with
+// no node in a room are skipped. `room_index` maps a room name or alias to the reasoner's room
+// type (-1: a type it cannot name, e.g. "storage"). scored = labelled regions whose true room
+// has a type the reasoner can name; correct = those whose label is that type; accuracy =
+// correct / scored (0 when none). `confusions` counts the wrong ones as "label <- true type".
+struct RegionLabelQuality {
+  int regions = 0;      // in a room
+  int labelled = 0;     // of those, with a label
+  int scored = 0;
+  int correct = 0;
+  double accuracy = 0.0;
+  std::map<std::string, int> confusions;
+};
+RegionLabelQuality regionLabelQuality(const SceneGraph& g, const World& world,
+                                      const std::function<int(const std::string&)>& room_index);
 
 struct ObjectMatchOptions {
   double box_margin = 0.3;     // m
