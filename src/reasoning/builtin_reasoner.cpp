@@ -140,6 +140,18 @@ double BuiltinReasoner::targetChance(const CoarseQuery& q, const RegionState& r)
     if (norm > 0.0) s_next += P[k] * s / norm;
   }
   s_next = conf * s_next + (1.0 - conf) * mean;
+  // Objects seen beyond the region (through a door) are that next room's own evidence.
+  if (!r.beyond.empty()) {
+    for (const auto& o : r.beyond)
+      for (const auto& t : q.instruction.targets)
+        if (enc.similarity(o, t) >= 0.85) return blendChance(r, s_self, 1.0);
+    int seen = 0;
+    const auto B = roomDistribution(r.beyond, &seen);
+    const double conf_b = 1.0 - std::exp(-seen / 2.0);
+    double s_b = 0.0;
+    for (size_t k = 0; k < R; ++k) s_b += B[k] * A[k];
+    s_next = conf_b * s_b + (1.0 - conf_b) * s_next;
+  }
   return blendChance(r, s_self, s_next);
 }
 

@@ -21,6 +21,7 @@ nlohmann::json toJson(const CoarseQuery& q) {
                        {"description", r.description},
                        {"adjacent", r.adjacent},
                        {"objects", r.objects},
+                       {"seen_beyond", r.beyond},
                        {"frontiers", r.frontiers},
                        {"frontier_gain", r2(r.frontier_gain)},
                        {"unseen_gain", r2(r.gain - r.frontier_gain)},

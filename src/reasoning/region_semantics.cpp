@@ -53,6 +53,7 @@ std::vector<RegionSummary> summarizeRegions(const SceneGraph& g) {
   std::vector<RegionSummary> out;
   std::map<int, size_t> index;  // region id -> out index
   std::map<int, int> region_of;  // node id -> region id
+  std::map<int, std::vector<size_t>> members;  // region id -> node indices
   for (const SgRegion& r : g.regions) {
     RegionSummary s;
     s.id = r.id;
@@ -62,7 +63,7 @@ std::vector<RegionSummary> summarizeRegions(const SceneGraph& g) {
     for (int n : r.nodes) {
       region_of[n] = r.id;
       const int k = g.nodeIndex(n);
-      if (k >= 0) pts.push_back(g.nodes[size_t(k)].centroid);
+      if (k >= 0) pts.push_back(g.nodes[size_t(k)].centroid), members[r.id].push_back(size_t(k));
     }
     s.nodes = int(pts.size());
     if (!pts.empty()) {
@@ -89,8 +90,14 @@ std::vector<RegionSummary> summarizeRegions(const SceneGraph& g) {
     if (i < 0) continue;
     const auto rit = region_of.find(g.nodes[size_t(i)].id);
     if (rit == region_of.end()) continue;
+    RegionSummary& s = out[index[rit->second]];
+    bool reached = false;
+    for (size_t k : members[s.id]) {
+      const SgNode& node = g.nodes[k];
+      reached = reached || (node.centroid.head<2>() - o.centroid.head<2>()).norm() <= node.radius + kReachMargin;
+    }
     ObjectBrief b{o.id, o.label, o.centroid, o.bbox_max - o.bbox_min, o.n_observations};
-    out[index[rit->second]].objects.push_back(b);
+    (reached ? s.objects : s.beyond).push_back(b);
   }
   return out;
 }

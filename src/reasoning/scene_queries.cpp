@@ -81,11 +81,12 @@ RegionPick pickRegionForRequest(const SceneGraph& g, const Instruction& ins, con
     const bool room_ok = want_room >= 0 && it != sem.end() && priors.roomIndex(it->second.label) == want_room;
     // A matching object in the region.
     double obj_best = 0.0;
-    for (const ObjectBrief& o : s.objects)
-      for (const auto& t : ins.targets) {
-        const double c = priors.encoder().similarity(o.label, t);
-        if (c >= goal_similarity && c > obj_best) obj_best = c, p.object = o.id, p.goal = o.position;
-      }
+    for (const auto* list : {&s.objects, &s.beyond})  // beyond: seen from it, reached through it
+      for (const ObjectBrief& o : *list)
+        for (const auto& t : ins.targets) {
+          const double c = priors.encoder().similarity(o.label, t);
+          if (c >= goal_similarity && c > obj_best) obj_best = c, p.object = o.id, p.goal = o.position;
+        }
     if (p.object >= 0 && (ins.room.empty() || room_ok)) {
       p.score = 1.0 + (room_ok ? 0.5 : 0.0);
       p.reason = "holds " + std::to_string(p.object) + " matching \"" + ins.text + "\"";
@@ -93,6 +94,7 @@ RegionPick pickRegionForRequest(const SceneGraph& g, const Instruction& ins, con
       RegionState st;
       st.id = s.id;
       for (const ObjectBrief& o : s.objects) st.objects.push_back(o.label);
+      for (const ObjectBrief& o : s.beyond) st.beyond.push_back(o.label);
       p.score = ins.targets.empty() ? 0.0 : 0.5 * builtin.targetChance(q, st);
       if (room_ok) p.score += 0.6;
       p.object = -1;
@@ -162,6 +164,11 @@ std::string answerQuestion(const SceneGraph& g, const std::string& question, con
       for (size_t i = 0; i < s.objects.size(); ++i) out << (i ? ", " : "") << s.objects[i].label << " at " << fmt(s.objects[i].position);
       out << ". ";
     }
+    if (!s.beyond.empty()) {
+      out << "Seen from here, beyond it: ";
+      for (size_t i = 0; i < s.beyond.size(); ++i) out << (i ? ", " : "") << s.beyond[i].label << " at " << fmt(s.beyond[i].position);
+      out << ". ";
+    }
     if (!s.adjacent.empty()) {
       out << "It connects to ";
       for (size_t i = 0; i < s.adjacent.size(); ++i) out << (i ? ", " : "") << regionName(s.adjacent[i], sem);
@@ -175,13 +182,14 @@ std::string answerQuestion(const SceneGraph& g, const std::string& question, con
       if (!ins.targets.empty() && ins.how != "literal") {
         int n = 0;
         for (const RegionSummary& s : summaries)
-          for (const ObjectBrief& o : s.objects)
-            for (const auto& t : ins.targets)
-              if (priors.encoder().similarity(o.label, t) >= 0.85) {
-                out << (n++ ? " " : "") << "A " << o.label << " (object " << o.id << ") is at " << fmt(o.position) << " in "
-                    << regionName(s.id, sem) << ".";
-                break;
-              }
+          for (const auto* list : {&s.objects, &s.beyond})
+            for (const ObjectBrief& o : *list)
+              for (const auto& t : ins.targets)
+                if (priors.encoder().similarity(o.label, t) >= 0.85) {
+                  out << (n++ ? " " : "") << "A " << o.label << " (object " << o.id << ") is at " << fmt(o.position)
+                      << (list == &s.objects ? " in " : ", seen from ") << regionName(s.id, sem) << ".";
+                  break;
+                }
         if (n == 0) out << "No " << ins.targets.front() << " has been seen yet.";
         return out.str();
       }

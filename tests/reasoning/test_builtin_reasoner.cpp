@@ -157,6 +157,27 @@ TEST(BuiltinReasoner, ChanceDecidesOnlyWhenItStandsOut) {
   EXPECT_EQ(choose(0.2, 0.2, 1.5).region, 5);
 }
 
+TEST(BuiltinReasoner, ObjectsSeenBeyondARegionSpeakForItsFrontiers) {
+  BuiltinReasoner R(priors());
+  CoarseQuery q;
+  q.instruction = interpretInstruction("fridge", *priors());
+  RegionState none = state(1, {});
+  none.frontier_gain = none.gain;  // every target a frontier: half the value is the next room's
+  RegionState kitchen = none, bedroom = none, fridge = none;
+  kitchen.beyond = {"microwave", "toaster", "coffee machine"};
+  bedroom.beyond = {"bed", "alarm clock"};
+  fridge.beyond = {"fridge"};
+  const double s0 = R.targetChance(q, none);
+  EXPECT_GT(R.targetChance(q, kitchen), s0 + 0.1);
+  EXPECT_LT(R.targetChance(q, bedroom), s0);
+  // The target itself seen beyond: the next room's chance is 1.
+  EXPECT_NEAR(R.targetChance(q, fridge), 0.5 * R.targetChance(q, state(1, {})) + 0.5, 1e-12);
+  // Without frontiers nothing looks beyond the region: what lies there does not count.
+  RegionState inside = kitchen, inside_none = none;
+  inside.frontier_gain = inside_none.frontier_gain = 0.0;
+  EXPECT_DOUBLE_EQ(R.targetChance(q, inside), R.targetChance(q, inside_none));
+}
+
 TEST(CoarseQuery, SerialisesTheDocumentedSchema) {
   CoarseQuery q = house("the sofa in the living room");
   q.history = {1, 3};
@@ -175,10 +196,10 @@ TEST(CoarseQuery, SerialisesTheDocumentedSchema) {
   EXPECT_EQ(j["visit_history"], nlohmann::json::array({1, 3}));
   ASSERT_EQ(j["regions"].size(), 4u);
   const auto& r = j["regions"][0];
-  for (const char* k : {"id", "label", "description", "adjacent", "objects", "frontiers", "frontier_gain", "unseen_gain",
-                        "distance_m", "visits"})
+  for (const char* k : {"id", "label", "description", "adjacent", "objects", "seen_beyond", "frontiers",
+                        "frontier_gain", "unseen_gain", "distance_m", "visits"})
     EXPECT_TRUE(r.contains(k)) << k;
-  EXPECT_EQ(r.size(), 10u);
+  EXPECT_EQ(r.size(), 11u);
   EXPECT_EQ(r["unseen_gain"], 100.0);  // state() puts all gain in unseen patches
   EXPECT_EQ(r["label"], "kitchen");
   EXPECT_EQ(r["objects"], nlohmann::json::array({"fridge", "microwave", "sink"}));

@@ -6,6 +6,7 @@
 
 #include "support/test_priors.hpp"
 
+#include <algorithm>
 #include <fstream>
 
 #include "support/paths.hpp"
@@ -32,7 +33,7 @@ SceneGraph twoRoomGraph() {
     SgNode n;
     n.id = int(i);
     n.centroid = pts[i];
-    n.radius = 0.6;
+    n.radius = 1.6;  // reach, as of the polyhedra of a mapped room (1.3-1.6 m)
     g.nodes.push_back(n);
   }
   for (auto [a, b] : std::vector<std::pair<int, int>>{{0, 1}, {1, 2}, {2, 3}, {3, 4}, {4, 5}, {5, 6}, {2, 7}})
@@ -75,6 +76,43 @@ TEST(SceneQueries, RequestPicksTheRegionThatServesIt) {
   const RegionPick k = pickRegionForRequest(g, kitchen, sem, *priors());
   EXPECT_EQ(k.region, 0);
   EXPECT_EQ(k.object, -1);
+}
+
+TEST(SceneQueries, ObjectsOutsideTheSpaceARegionReachesAreSeenBeyondIt) {
+  SceneGraph g = twoRoomGraph();
+  // A bed seen from the door node of room A (node 3) lies 3.5 m away, past every node of A
+  // (radius 1.6 + kReachMargin): evidence about the room beyond, not about A. A sink next to
+  // node 2 is A's own.
+  auto anchored = [&](int id, const std::string& label, Vec3 c, int node) {
+    SgObject o;
+    o.id = id;
+    o.label = label;
+    o.centroid = c;
+    o.bbox_min = c - Vec3(0.3, 0.3, 0.3);
+    o.bbox_max = c + Vec3(0.3, 0.3, 0.3);
+    o.n_observations = 5;
+    o.node_id = node;
+    g.objects.push_back(o);
+  };
+  anchored(5, "bed", Vec3(8.5, 2.5, 0.3), 3);
+  anchored(6, "sink", Vec3(4.0, 2.9, 0.8), 2);
+  const auto s = summarizeRegions(g);
+  ASSERT_EQ(s.size(), 2u);
+  auto has = [](const std::vector<ObjectBrief>& v, int id) {
+    return std::any_of(v.begin(), v.end(), [&](const ObjectBrief& o) { return o.id == id; });
+  };
+  EXPECT_TRUE(has(s[0].beyond, 5));
+  EXPECT_FALSE(has(s[0].objects, 5));
+  EXPECT_TRUE(has(s[0].objects, 6));
+  EXPECT_TRUE(has(s[0].objects, 1));  // the fridge in A's corner, 2.3 m from nodes 0 and 1
+  EXPECT_TRUE(has(s[0].objects, 2));  // the stove, 0.8 m from node 7
+  EXPECT_FALSE(has(s[1].objects, 5));
+  // ask: "where" still finds it, and says where it was seen from.
+  BuiltinReasoner R(priors());
+  const auto sem = graphSemantics(g, &R);
+  const std::string a = answerQuestion(g, "Where is the bed?", std::nullopt, sem, *priors());
+  EXPECT_NE(a.find("object 5"), std::string::npos) << a;
+  EXPECT_NE(a.find("seen from"), std::string::npos) << a;
 }
 
 TEST(SceneQueries, RouteFollowsTheGraphThroughTheDoor) {

@@ -13,7 +13,9 @@
 //    door, whose type follows the room-adjacency prior from the region's type: s_next = conf *
 //    sum_k P(k | region) sum_j adj(k, j) A(j) / sum_j adj(k, j) + (1 - conf) * mean; the chance
 //    is s = (1 - f) s_self + f s_next with f = 0.5 * frontier gain / gain (a hallway scores high
-//    for a bed, a kitchen does not);
+//    for a bed, a kitchen does not); objects seen beyond the region (RegionState::beyond, in a
+//    room not entered yet) are the next room's own evidence: s_next <- conf_b * sum_k
+//    P(k | beyond) A(k) + (1 - conf_b) * s_next, and 1 when one of them matches a target;
 //  - the choice maximises (s + 0.02) * best_utility, the region's best target gain / cost (the
 //    frontier planner's own criterion), the region chosen last (else the current one) x 1.2
 //    while it has targets;

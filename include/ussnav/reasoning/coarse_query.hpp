@@ -23,6 +23,8 @@ struct RegionState {
   double label_confidence = 0.0;
   std::vector<int> adjacent;
   std::vector<std::string> objects; // labels
+  std::vector<std::string> beyond;  // labels of objects seen from it in space it does not reach
+                                    // (RegionSummary::beyond: the room next door)
   int frontiers = 0;                // exploration targets in it
   double gain = 0.0;                // their summed gain
   double frontier_gain = 0.0;       // of that, frontiers' (they look beyond the region; the rest

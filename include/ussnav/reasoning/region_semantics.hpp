@@ -33,6 +33,9 @@ struct RegionSummary {
   double elongation = 1.0;          // major / minor spread of its node centroids in the plane
   std::vector<int> adjacent;        // region ids
   std::vector<ObjectBrief> objects; // by id
+  // Seen from its nodes but lying outside the space they cover (objects in a room not entered
+  // yet, seen through its door): evidence about the room next door, not about this one.
+  std::vector<ObjectBrief> beyond;
 };
 
 struct RegionSemantics {
@@ -46,7 +49,10 @@ struct RegionSemantics {
 
 // Regions of a snapshot with their objects: each object goes to the region of its anchor node
 // (the node that sees it, so a stove seen through a door joins the kitchen), or, without one,
-// of the node whose centroid is nearest to the object's centroid in the plane. Ascending id.
+// of the node whose centroid is nearest to the object's centroid in the plane; to its `beyond`
+// list instead when no node of that region reaches it (plane distance from the node's centroid
+// above its radius + kReachMargin). Ascending id.
+constexpr double kReachMargin = 0.75;  // m
 std::vector<RegionSummary> summarizeRegions(const SceneGraph& g);
 // The region a point belongs to (region of the nearest node in the plane), -1 without nodes.
 int regionAt(const SceneGraph& g, const Vec3& p);
