@@ -22,6 +22,19 @@ namespace {
 
 using test::priors;
 
+// A 0.6 m cube seen 5 times; `node`: the node that saw it (-1: none).
+SgObject object(int id, const std::string& label, const Vec3& c, int node = -1) {
+  SgObject o;
+  o.id = id;
+  o.label = label;
+  o.centroid = c;
+  o.bbox_min = c - Vec3(0.3, 0.3, 0.3);
+  o.bbox_max = c + Vec3(0.3, 0.3, 0.3);
+  o.n_observations = 5;
+  o.node_id = node;
+  return o;
+}
+
 // Nodes along y = 2 at flight height through the door of test::twoRooms (x = 5, y 1.5..2.5),
 // region 0 = room A (x < 5), region 1 = room B; a fridge and a stove in A, a conference table
 // and chairs in B; a dead-end node in A's corner tempts a straight line through the wall.
@@ -40,20 +53,10 @@ SceneGraph twoRoomGraph() {
     g.edges.push_back({a, b, "overlap", 1.0});
   g.regions.push_back({0, {0, 1, 2, 3, 7}, "", "", Vec3(3.0, 2.0, 1.2), {1}});
   g.regions.push_back({1, {4, 5, 6}, "", "", Vec3(7.5, 1.7, 1.2), {0}});
-  auto obj = [&](int id, const std::string& label, Vec3 c) {
-    SgObject o;
-    o.id = id;
-    o.label = label;
-    o.centroid = c;
-    o.bbox_min = c - Vec3(0.3, 0.3, 0.3);
-    o.bbox_max = c + Vec3(0.3, 0.3, 0.3);
-    o.n_observations = 5;
-    g.objects.push_back(o);
-  };
-  obj(1, "fridge", Vec3(0.6, 3.3, 0.9));
-  obj(2, "stove", Vec3(3.5, 3.5, 0.45));
-  obj(3, "conference table", Vec3(8.6, 3.0, 0.4));
-  obj(4, "chair", Vec3(8.0, 3.2, 0.45));
+  g.objects.push_back(object(1, "fridge", Vec3(0.6, 3.3, 0.9)));
+  g.objects.push_back(object(2, "stove", Vec3(3.5, 3.5, 0.45)));
+  g.objects.push_back(object(3, "conference table", Vec3(8.6, 3.0, 0.4)));
+  g.objects.push_back(object(4, "chair", Vec3(8.0, 3.2, 0.45)));
   return g;
 }
 
@@ -83,19 +86,8 @@ TEST(SceneQueries, ObjectsOutsideTheSpaceARegionReachesAreSeenBeyondIt) {
   // A bed seen from the door node of room A (node 3) lies 3.5 m away, past every node of A
   // (radius 1.6 + kReachMargin): evidence about the room beyond, not about A. A sink next to
   // node 2 is A's own.
-  auto anchored = [&](int id, const std::string& label, Vec3 c, int node) {
-    SgObject o;
-    o.id = id;
-    o.label = label;
-    o.centroid = c;
-    o.bbox_min = c - Vec3(0.3, 0.3, 0.3);
-    o.bbox_max = c + Vec3(0.3, 0.3, 0.3);
-    o.n_observations = 5;
-    o.node_id = node;
-    g.objects.push_back(o);
-  };
-  anchored(5, "bed", Vec3(8.5, 2.5, 0.3), 3);
-  anchored(6, "sink", Vec3(4.0, 2.9, 0.8), 2);
+  g.objects.push_back(object(5, "bed", Vec3(8.5, 2.5, 0.3), 3));
+  g.objects.push_back(object(6, "sink", Vec3(4.0, 2.9, 0.8), 2));
   const auto s = summarizeRegions(g);
   ASSERT_EQ(s.size(), 2u);
   auto has = [](const std::vector<ObjectBrief>& v, int id) {
