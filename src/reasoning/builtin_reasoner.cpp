@@ -19,6 +19,21 @@ constexpr double kHallwayElongation = 3.0;
 // Share of a frontier's gain that lies in the next room rather than in more of the same one.
 constexpr double kBeyond = 0.5;
 
+// Whether one of `labels` is one of the targets (the same test as a found object's).
+bool namesTarget(const TextEncoder& enc, const std::vector<std::string>& labels, const std::vector<std::string>& targets) {
+  for (const auto& o : labels)
+    for (const auto& t : targets)
+      if (enc.similarity(o, t) >= 0.85) return true;
+  return false;
+}
+
+// sum_k P(k) A(k): the target's affinity expected under a room distribution.
+double expectedAffinity(const std::vector<double>& P, const std::vector<double>& A) {
+  double s = 0.0;
+  for (size_t k = 0; k < P.size(); ++k) s += P[k] * A[k];
+  return s;
+}
+
 std::string article(const std::string& w) {
   return (!w.empty() && std::string("aeiou").find(w[0]) != std::string::npos ? "an " : "a ") + w;
 }
@@ -89,9 +104,7 @@ RegionSemantics BuiltinReasoner::labelRegion(const RegionSummary& region) {
 double BuiltinReasoner::targetChance(const CoarseQuery& q, const RegionState& r) const {
   const size_t R = priors_->rooms().size();
   const TextEncoder& enc = priors_->encoder();
-  for (const auto& o : r.objects)
-    for (const auto& t : q.instruction.targets)
-      if (enc.similarity(o, t) >= 0.85) return 1.0;
+  if (namesTarget(enc, r.objects, q.instruction.targets)) return 1.0;
   // Target affinity per room.
   std::vector<double> A(R, 0.0);
   bool any = false;
@@ -122,9 +135,7 @@ double BuiltinReasoner::targetChance(const CoarseQuery& q, const RegionState& r)
     P[size_t(named)] = 1.0;
     conf = std::min(1.0, r.label_confidence);
   }
-  double s_self = 0.0;
-  for (size_t k = 0; k < R; ++k) s_self += P[k] * A[k];
-  s_self = conf * s_self + (1.0 - conf) * mean;
+  const double s_self = conf * expectedAffinity(P, A) + (1.0 - conf) * mean;
   if (kBeyond <= 0.0 || r.gain <= 0.0 || r.frontier_gain <= 0.0) return s_self;
   // Frontiers look into unknown space: more of this room, or the room next door, whose type
   // follows the adjacency prior from this region's type.
@@ -141,16 +152,12 @@ double BuiltinReasoner::targetChance(const CoarseQuery& q, const RegionState& r)
   }
   s_next = conf * s_next + (1.0 - conf) * mean;
   // Objects seen beyond the region (through a door) are that next room's own evidence.
+  if (namesTarget(enc, r.beyond, q.instruction.targets)) return blendChance(r, s_self, 1.0);
   if (!r.beyond.empty()) {
-    for (const auto& o : r.beyond)
-      for (const auto& t : q.instruction.targets)
-        if (enc.similarity(o, t) >= 0.85) return blendChance(r, s_self, 1.0);
     int seen = 0;
     const auto B = roomDistribution(r.beyond, &seen);
     const double conf_b = 1.0 - std::exp(-seen / 2.0);
-    double s_b = 0.0;
-    for (size_t k = 0; k < R; ++k) s_b += B[k] * A[k];
-    s_next = conf_b * s_b + (1.0 - conf_b) * s_next;
+    s_next = conf_b * expectedAffinity(B, A) + (1.0 - conf_b) * s_next;
   }
   return blendChance(r, s_self, s_next);
 }

@@ -91,11 +91,10 @@ std::vector<RegionSummary> summarizeRegions(const SceneGraph& g) {
     const auto rit = region_of.find(g.nodes[size_t(i)].id);
     if (rit == region_of.end()) continue;
     RegionSummary& s = out[index[rit->second]];
-    bool reached = false;
-    for (size_t k : members[s.id]) {
-      const SgNode& node = g.nodes[k];
-      reached = reached || (node.centroid.head<2>() - o.centroid.head<2>()).norm() <= node.radius + kReachMargin;
-    }
+    const auto& nodes = members[s.id];
+    const bool reached = std::any_of(nodes.begin(), nodes.end(), [&](size_t k) {
+      return (g.nodes[k].centroid.head<2>() - o.centroid.head<2>()).norm() <= g.nodes[k].radius + kReachMargin;
+    });
     ObjectBrief b{o.id, o.label, o.centroid, o.bbox_max - o.bbox_min, o.n_observations};
     (reached ? s.objects : s.beyond).push_back(b);
   }

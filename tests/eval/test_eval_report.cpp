@@ -103,6 +103,11 @@ TEST(EvalReport, RegionLabelColumnsRoundTripAndOldFilesStillLoad) {
   EXPECT_EQ(bad, 0);
   EXPECT_EQ(rows[0].labels_scored, 7);
   EXPECT_EQ(rows[0].labels_correct, 3);
+  // A label column that is not a number: the row is dropped and counted, not read as 0.
+  std::string garbled = toCsv(a);
+  garbled.replace(garbled.rfind(",3"), 2, ",x");
+  EXPECT_TRUE(readEpisodesCsv(writeText("garbled.csv", csvHeader() + "\n" + garbled + "\n"), &bad).empty());
+  EXPECT_EQ(bad, 1);
   const auto old = readEpisodesCsv(writeText("old.csv", old_header + "\n" + old_row + "\n"), &bad);
   ASSERT_EQ(old.size(), 1u);
   EXPECT_EQ(bad, 0);
