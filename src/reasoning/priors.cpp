@@ -215,20 +215,25 @@ std::vector<double> CommonsensePriors::roomsGivenObject(const std::string& label
   }
   std::vector<double> sum(rooms_.size(), 0.0);
   int n = 0;
-  // Exact category words (or aliases) first, for the label or a WordNet synonym of it ("tv" ->
-  // "television", an alias of tv_monitor); otherwise every row within match_cosine of the label.
-  std::vector<std::string> keys{key};
-  for (const auto& syn : wordnet::synonymsOf(key)) keys.push_back(lower(syn));
-  auto named = [&](const Row& r) {
-    for (const auto& k : keys)
-      if (std::find(r.names.begin(), r.names.end(), k) != r.names.end()) return true;
-    return false;
+  // Exact category words (or aliases) first: the label's own, else those of a WordNet synonym
+  // of it ("tv" -> "television", an alias of tv_monitor). A label that names a category is not
+  // widened by its synonyms: "toilet" is also a "stool" and a "pot" in WordNet, which put a
+  // kitchen's pots into every bathroom. Otherwise every row within match_cosine.
+  auto addNamed = [&](const std::vector<std::string>& keys) {
+    for (const Row& r : rows_)
+      if (std::any_of(keys.begin(), keys.end(), [&](const std::string& k) {
+            return std::find(r.names.begin(), r.names.end(), k) != r.names.end();
+          })) {
+        for (size_t k = 0; k < sum.size(); ++k) sum[k] += r.p[k];
+        ++n;
+      }
   };
-  for (const Row& r : rows_)
-    if (named(r)) {
-      for (size_t k = 0; k < sum.size(); ++k) sum[k] += r.p[k];
-      ++n;
-    }
+  addNamed({key});
+  if (n == 0) {
+    std::vector<std::string> synonyms;
+    for (const auto& syn : wordnet::synonymsOf(key)) synonyms.push_back(lower(syn));
+    addNamed(synonyms);
+  }
   if (n == 0 && encoder_) {
     // Every category within match_cosine; failing that, the nearest one(s) within
     // kNearCosine ("refrigerator" -> Fridge, "nightstand" -> side table), at half weight
