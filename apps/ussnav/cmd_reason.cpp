@@ -10,11 +10,11 @@
 #include "command.hpp"
 #include "ussnav/core/error.hpp"
 #include "ussnav/core/io.hpp"
+#include "ussnav/episode/route_flight.hpp"
 #include "ussnav/reasoning/reasoner.hpp"
 #include "ussnav/reasoning/scene_queries.hpp"
 #include "ussnav/scene_graph/io.hpp"
 #include "ussnav/sim/simulator.hpp"
-#include "ussnav/sim/uav.hpp"
 #include "ussnav/sim/world_io.hpp"
 
 namespace ussnav::cli {
@@ -85,18 +85,16 @@ void runGoto(const ReasonArgs& a) {
     const Vec3 d = goal - prev;
     path.back() = d.norm() > keep ? Vec3(goal - d.normalized() * keep) : prev;
   }
-  Uav uav(c.cfg.sim.uav, start);
-  uav.setPath(path);
-  const double dt = 1.0 / c.cfg.sim.frame_rate_hz;
-  double t = 0.0;
-  while (!uav.pathDone() && t < c.cfg.episode.max_time_s) {
-    if (!uav.step(sim.groundTruth(), dt)) break;
-    t += dt;
-  }
-  const int reached_region = regionAt(c.graph, uav.pose().position);
-  const bool ok = uav.collisions() == 0 && (uav.pose().position - path.back()).norm() <= c.cfg.episode.goal_tolerance + 0.2;
-  std::printf("  flew %.1f m in %.0f s along %zu graph waypoints: %s, now in region %d, %d collisions\n",
-              uav.distanceTravelled(), t, path.size(), ok ? "ARRIVED" : "STOPPED", reached_region, uav.collisions());
+  // The graph's route, flown on a live map (route_flight.hpp): the saved polyhedra reach the
+  // faces of walls and furniture, so the legs between their centres are not flown blindly.
+  const RouteFlight fl = flyRoute(world, c.cfg, start, path);
+  const int reached_region = regionAt(c.graph, fl.final_pose.position);
+  const bool ok = fl.arrived && fl.collisions == 0;
+  std::printf("  flew %.1f m in %.0f s along %zu graph waypoints (%d flight paths): %s, now in region %d, %d collisions\n",
+              fl.path_length_m, fl.time_s, path.size(), fl.legs, ok ? "ARRIVED" : ("STOPPED (" + fl.end_reason + ")").c_str(),
+              reached_region, fl.collisions);
+  if (fl.end_shift_m > 0.0)
+    std::printf("  the goal point lay inside the clearance margin: stopped %.1f m short of it\n", fl.end_shift_m);
   if (!a.out.empty()) {
     nlohmann::json route_json = nlohmann::json::array();
     for (const Vec3& p : path) route_json.push_back({p.x(), p.y(), p.z()});
@@ -106,14 +104,17 @@ void runGoto(const ReasonArgs& a) {
                             {"object", pick.object},
                             {"reason", pick.reason},
                             {"route", route_json},
-                            {"path_length_m", uav.distanceTravelled()},
-                            {"time_s", t},
+                            {"path_length_m", fl.path_length_m},
+                            {"time_s", fl.time_s},
                             {"arrived", ok},
+                            {"end_reason", fl.end_reason},
+                            {"end", {fl.end.x(), fl.end.y(), fl.end.z()}},
+                            {"flight_paths", fl.legs},
                             {"final_region", reached_region},
-                            {"collisions", uav.collisions()}});
+                            {"collisions", fl.collisions}});
     std::printf("wrote %s\n", a.out.c_str());
   }
-  if (!ok) throw std::runtime_error("the UAV did not arrive (collision or time budget)");
+  if (!ok) throw std::runtime_error("the UAV did not arrive (" + fl.end_reason + ")");
 }
 
 void runAsk(const ReasonArgs& a) {

@@ -51,18 +51,6 @@ struct Blacklisted {
   double until;
 };
 
-// Whether the first `horizon` metres of a polyline cross an inflated obstacle.
-// When the UAV itself stands inside the margin, the first segment is the escape step out of it
-// (flight_path.hpp) and is not judged.
-bool pathBlocked(const OccupancyMap& map, const std::vector<Vec3>& path, double horizon) {
-  double walked = 0.0;
-  const size_t first = !path.empty() && map.stateAt(path[0]) == VoxelState::Occupied ? 2 : 1;
-  for (size_t i = first; i < path.size() && walked < horizon; ++i) {
-    if (castRay(map, path[i - 1], path[i], false).blocked) return true;
-    walked += (path[i] - path[i - 1]).norm();
-  }
-  return false;
-}
 
 }  // namespace
 
@@ -130,21 +118,14 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
   // Flight paths keep ep.clearance from mapped obstacles, or the UAV radius + 0.1 m (a point in a
   // voxel is up to 0.087 m from its centre) where no path keeps that much (narrow doors), through
   // space seen free; only when none does may a detour cross voxels not seen yet.
-  FlightPathOptions fopt;
-  fopt.clearance = ep.clearance;
-  fopt.body_radius = cfg.sim.uav.radius + 0.02;
-  fopt.z_min = std::max(cfg.sim.uav.radius + 0.25, flight_z - 0.7);
-  fopt.z_max = flight_z + 0.8;
-  fopt.waypoint_z_min = flight_z - 0.3;
-  fopt.waypoint_z_max = flight_z + kApproachAbove;
+  // Margins of the flight-path ladder: the full clearance, then narrower ones (doors of real
+  // buildings are 0.8-0.9 m wide); each through seen-free space, then again through unseen voxels.
+  const FlightSettings flight = flightSettings(cfg, flight_z);
+  const FlightPathOptions& fopt = flight.options;
+  const std::vector<double>& clearances = flight.clearances;
   // The margin of the last path flightPath found, and of the path being flown: the blocked-path
   // checks use it, so a path planned through a narrow door is not dropped as blocked at once.
   double last_clearance = fopt.clearance, path_clearance = fopt.clearance;
-  // Margins of the flight-path ladder: the full clearance, then narrower ones (doors of real
-  // buildings are 0.8-0.9 m wide); each through seen-free space, then again through unseen voxels.
-  std::vector<double> clearances{ep.clearance};
-  for (const double margin : {0.1, 0.05})
-    if (ep.clearance > cfg.sim.uav.radius + margin) clearances.push_back(cfg.sim.uav.radius + margin);
   auto flightPath = [&](const Vec3& a, const Vec3& b) -> std::optional<std::vector<Vec3>> {
     auto plan = planFlightPathLadder(mapper.graph(), mapper.grid(), a, b, fopt, clearances);
     if (!plan) return std::nullopt;

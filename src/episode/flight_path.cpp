@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "ussnav/episode/approach.hpp"
 #include "ussnav/mapping/inflated_map.hpp"
 #include "ussnav/skeleton/graph_search.hpp"
 #include "ussnav/skeleton/grid_path.hpp"
@@ -168,6 +169,32 @@ std::optional<FlightPlan> planFlightPathLadder(const ConnectivityGraph& g, const
       if (auto p = planFlightPath(g, grid, from, to, o)) return FlightPlan{std::move(*p), c, unknown};
     }
   return std::nullopt;
+}
+
+bool pathBlocked(const OccupancyMap& map, const std::vector<Vec3>& path, double horizon) {
+  double walked = 0.0;
+  const size_t first = !path.empty() && map.stateAt(path[0]) == VoxelState::Occupied ? 2 : 1;
+  for (size_t i = first; i < path.size() && walked < horizon; ++i) {
+    if (castRay(map, path[i - 1], path[i], false).blocked) return true;
+    walked += (path[i] - path[i - 1]).norm();
+  }
+  return false;
+}
+
+FlightSettings flightSettings(const Config& cfg, double flight_z) {
+  FlightSettings s;
+  FlightPathOptions& o = s.options;
+  const double radius = cfg.sim.uav.radius, clearance = cfg.episode.clearance;
+  o.clearance = clearance;
+  o.body_radius = radius + 0.02;
+  o.z_min = std::max(radius + 0.25, flight_z - 0.7);
+  o.z_max = flight_z + 0.8;
+  o.waypoint_z_min = flight_z - 0.3;
+  o.waypoint_z_max = flight_z + kApproachAbove;
+  s.clearances = {clearance};
+  for (const double margin : {0.1, 0.05})
+    if (clearance > radius + margin) s.clearances.push_back(radius + margin);
+  return s;
 }
 
 }  // namespace ussnav
