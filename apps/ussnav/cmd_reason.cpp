@@ -87,7 +87,7 @@ void runGoto(const ReasonArgs& a) {
   }
   // The graph's route, flown on a live map (route_flight.hpp): the saved polyhedra reach the
   // faces of walls and furniture, so the legs between their centres are not flown blindly.
-  const RouteFlight fl = flyRoute(world, c.cfg, start, path);
+  const RouteFlight fl = flyRoute(sim, c.cfg, start, path);
   const int reached_region = regionAt(c.graph, fl.final_pose.position);
   const bool ok = fl.arrived && fl.collisions == 0;
   std::printf("  flew %.1f m in %.0f s along %zu graph waypoints (%d flight paths): %s, now in region %d, %d collisions\n",
@@ -110,6 +110,7 @@ void runGoto(const ReasonArgs& a) {
                             {"end_reason", fl.end_reason},
                             {"end", {fl.end.x(), fl.end.y(), fl.end.z()}},
                             {"flight_paths", fl.legs},
+                            {"narrow_flight_paths", fl.narrow_legs},
                             {"final_region", reached_region},
                             {"collisions", fl.collisions}});
     std::printf("wrote %s\n", a.out.c_str());

@@ -11,7 +11,6 @@
 #include "ussnav/core/error.hpp"
 #include "ussnav/episode/flight_path.hpp"
 #include "ussnav/mapping/inflated_map.hpp"
-#include "ussnav/mapping/map_drawing.hpp"
 #include "ussnav/pipeline/mapper.hpp"
 #include "ussnav/sim/simulator.hpp"
 #include "ussnav/sim/uav.hpp"
@@ -31,11 +30,10 @@ double remainingLength(const Uav& uav) {
 
 }  // namespace
 
-RouteFlight flyRoute(const World& world, const Config& cfg, const Pose& start, const std::vector<Vec3>& route,
-                     const RouteFlightOptions& opt, uint64_t seed) {
+RouteFlight flyRoute(Simulator& sim, const Config& cfg, const Pose& start, const std::vector<Vec3>& route,
+                     const RouteFlightOptions& opt) {
   if (route.empty()) throw InputError("route", "", "expected at least one point to fly to");
   const EpisodeConfig& ep = cfg.episode;
-  Simulator sim(world, cfg, seed);
   MapperOptions mopt;
   mopt.objects = false;
   mopt.regions = false;
@@ -166,8 +164,6 @@ RouteFlight flyRoute(const World& world, const Config& cfg, const Pose& start, c
         if (stalled_since < 0.0) stalled_since = t;
         const Vec3 d = pointAt(std::min(along.back(), done + 1.0)) - at;
         const double stalled = t - stalled_since;
-        if (std::getenv("USSNAV_DEBUG_SLICE") && stalled > 3.0 && stalled < 3.0 + dt)
-          std::fprintf(stderr, "%s", asciiSlice(mapper.grid(), mapper.coverage(), {}, start.position.z()).c_str());
         uav.setYawTarget(std::atan2(d.y(), d.x()) + (stalled < 2.0 ? 0.0 : 1.6 * std::floor(stalled / 2.0)));
         if (t - stalled_since >= opt.stall_s) {
           R.end_reason = "no_safe_path";

@@ -43,7 +43,8 @@ TEST(RouteFlight, KeepsClearOfADoorJambThatTheRouteGrazes) {
       if (!blind.step(sim.groundTruth(), 0.1)) break;
     ASSERT_GT(blind.collisions(), 0);
   }
-  const RouteFlight f = flyRoute(world, cfg, startAt(route.front()), route);
+  Simulator sim(world, cfg, 1);
+  const RouteFlight f = flyRoute(sim, cfg, startAt(route.front()), route);
   EXPECT_TRUE(f.arrived) << f.end_reason;
   EXPECT_EQ(f.end_reason, "arrived");
   EXPECT_EQ(f.collisions, 0);
@@ -61,10 +62,11 @@ TEST(RouteFlight, ARouteThroughAWallStopsWithoutACollision) {
   cfg.episode.clearance = cfg.sim.uav.radius + 0.05;
   RouteFlightOptions opt;
   opt.stall_s = 1.0;
-  const RouteFlight f = flyRoute(world, cfg, startAt(Vec3(2.5, 2.0, kZ)), {Vec3(2.5, 2.0, kZ), Vec3(8.0, 2.0, kZ)}, opt);
+  Simulator sim(world, cfg, 1);
+  const RouteFlight f = flyRoute(sim, cfg, startAt(Vec3(2.5, 2.0, kZ)), {Vec3(2.5, 2.0, kZ), Vec3(8.0, 2.0, kZ)}, opt);
   EXPECT_FALSE(f.arrived);
   EXPECT_EQ(f.end_reason, "no_safe_path");
   EXPECT_EQ(f.collisions, 0);
   EXPECT_LT(f.final_pose.position.x(), 5.0);
-  EXPECT_THROW(flyRoute(world, cfg, startAt(Vec3(2.5, 2.0, kZ)), {}), InputError);
+  EXPECT_THROW(flyRoute(sim, cfg, startAt(Vec3(2.5, 2.0, kZ)), {}), InputError);
 }

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "ussnav/core/config.hpp"
-#include "ussnav/sim/world.hpp"
+#include "ussnav/sim/simulator.hpp"
 
 namespace ussnav {
 
@@ -45,9 +45,9 @@ struct RouteFlight {
   Pose final_pose;
 };
 
-// `route` from the start pose's position to the goal (at least one point). Throws InputError on
-// an empty route.
-RouteFlight flyRoute(const World& world, const Config& cfg, const Pose& start, const std::vector<Vec3>& route,
-                     const RouteFlightOptions& opt = {}, uint64_t seed = 1);
+// `route` from the start pose's position to the goal (at least one point), flown in `sim` (the
+// caller's, which also gave the start pose). Throws InputError on an empty route.
+RouteFlight flyRoute(Simulator& sim, const Config& cfg, const Pose& start, const std::vector<Vec3>& route,
+                     const RouteFlightOptions& opt = {});
 
 }  // namespace ussnav
