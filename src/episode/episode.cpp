@@ -444,6 +444,10 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
             tg.viewpoints.push_back(*v);
           }
           tg.gain = tg.viewpoints.front().gain * 1.0;
+          if (cfg.exploration.unknown_volume_weight > 0.0)
+            tg.gain += cfg.exploration.unknown_volume_weight *
+                       visibleUnknownVolume(mapper.grid(), tg.viewpoints.front().position,
+                                            tg.viewpoints.front().yaw, cfg.exploration);
           targets.push_back(std::move(tg));
         }
         std::vector<UnseenPatch> patches = camera.patches();

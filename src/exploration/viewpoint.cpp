@@ -42,6 +42,35 @@ bool viewpointSafe(const RollingGrid& grid, const Vec3& p, const ExplorationConf
          !grid.isInflatedOccupied(p, cfg.viewpoint_clearance, /*unknown_unsafe=*/true);
 }
 
+double visibleUnknownVolume(const RollingGrid& grid, const Vec3& position, double yaw,
+                            const ExplorationConfig& cfg) {
+  const double hfov = deg2rad(cfg.sensor_hfov_deg), vfov = deg2rad(cfg.sensor_vfov_deg);
+  const int n_az = std::max(1, int(std::ceil(cfg.sensor_hfov_deg / 4.0)));
+  const int n_el = std::max(1, int(std::ceil(cfg.sensor_vfov_deg / 5.0)));
+  const double d_az = hfov / n_az, d_el = vfov / n_el;
+  const double dr = grid.resolution();
+  double volume = 0.0;
+  for (int j = 0; j < n_el; ++j) {
+    const double el = -0.5 * vfov + (j + 0.5) * d_el;
+    const double d_omega = d_az * d_el * std::cos(el);
+    for (int i = 0; i < n_az; ++i) {
+      const double az = yaw - 0.5 * hfov + (i + 0.5) * d_az;
+      const Vec3 dir(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
+      for (double r = 0.5 * dr; r < cfg.sensor_range; r += dr) {
+        const Vec3 p = position + r * dir;
+        const Vec3i k = grid.keyOf(p);
+        if (!grid.inWindow(k)) break;
+        const VoxelState s = grid.stateFast(k);
+        if (s == VoxelState::Occupied) break;
+        if (s != VoxelState::Unknown) continue;
+        const double z = grid.centerOf(k).z();
+        if (z >= cfg.band_z_min && z <= cfg.band_z_max) volume += r * r * dr * d_omega;
+      }
+    }
+  }
+  return volume;
+}
+
 std::vector<Viewpoint> computeViewpoints(const RollingGrid& grid, const std::vector<Vec3i>& cells,
                                          const Vec3& centroid, const ExplorationConfig& cfg) {
   std::vector<Viewpoint> out;

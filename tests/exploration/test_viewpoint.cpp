@@ -87,3 +87,51 @@ TEST(Viewpoint, UnsafeAndUnknownPositionsRejected) {
   EXPECT_FALSE(viewpointSafe(grid, Vec3(2.9, 0.0, 1.2), cfg));   // 0.13 m from the east wall
   EXPECT_FALSE(viewpointSafe(grid, Vec3(20.0, 0.0, 1.2), cfg));  // outside the window
 }
+
+// An empty window is all unknown: the volume is the field of view's cone, hfov x 2 sin(vfov/2)
+// x R^3 / 3, up to the ray discretisation; the band keeps only the voxels whose centre lies in it.
+TEST(Viewpoint, UnknownVolumeOfAnEmptyWindowIsTheViewCone) {
+  RollingGrid grid(GridConfig{}, Vec3(0, 0, 1.2));
+  ExplorationConfig cfg;
+  cfg.sensor_range = 3.0;
+  cfg.band_z_min = -10.0;
+  cfg.band_z_max = 10.0;
+  const double cone = deg2rad(cfg.sensor_hfov_deg) * 2 * std::sin(deg2rad(cfg.sensor_vfov_deg) / 2) * 27.0 / 3.0;
+  const double v = visibleUnknownVolume(grid, Vec3(0.05, 0.05, 1.25), 0.3, cfg);
+  EXPECT_NEAR(v, cone, 0.02 * cone);
+  cfg.band_z_min = 1.3;  // voxel centres from 1.35 up: the upper half of the cone, less a slab
+  const double upper = visibleUnknownVolume(grid, Vec3(0.05, 0.05, 1.25), 0.3, cfg);
+  EXPECT_LT(upper, 0.5 * cone);
+  EXPECT_GT(upper, 0.35 * cone);
+}
+
+// A mapped room with a door in its east wall onto space never seen: looking at the door shows
+// the unknown room beyond; looking at a wall of the same room shows next to nothing.
+TEST(Viewpoint, UnknownVolumeSeesThroughADoorNotThroughAWall) {
+  test::BoxScene scene;  // interior x in [-3, 0.5], y in [-2.5, 2.5], z in [0, 2.6]; door y in [-0.5, 0.5]
+  const double w = 0.5;
+  scene.solids.push_back(Aabb::of(Vec3(-3.5, -3.0, -w), Vec3(6.0, 3.0, 0.0)));        // floor
+  scene.solids.push_back(Aabb::of(Vec3(-3.5, -3.0, 2.6), Vec3(6.0, 3.0, 2.6 + w)));   // ceiling
+  scene.solids.push_back(Aabb::of(Vec3(-3.5, -3.0, 0.0), Vec3(1.0, -2.5, 2.6)));      // south
+  scene.solids.push_back(Aabb::of(Vec3(-3.5, 2.5, 0.0), Vec3(1.0, 3.0, 2.6)));        // north
+  scene.solids.push_back(Aabb::of(Vec3(-3.5, -2.5, 0.0), Vec3(-3.0, 2.5, 2.6)));      // west
+  scene.solids.push_back(Aabb::of(Vec3(0.5, -2.5, 0.0), Vec3(1.0, -0.5, 2.6)));       // east, south of the door
+  scene.solids.push_back(Aabb::of(Vec3(0.5, 0.5, 0.0), Vec3(1.0, 2.5, 2.6)));         // east, north of the door
+  scene.solids.push_back(Aabb::of(Vec3(0.5, -0.5, 2.1), Vec3(1.0, 0.5, 2.6)));        // lintel
+  RollingGrid grid(GridConfig{}, Vec3(1.0, 0.0, 1.2));  // the window reaches x = 5
+  // Full turns at five places with a 2.5 m depth range: the room is known, the next one is
+  // not (no-return rays clear 2.5 m: through the door only its first metre or so).
+  for (const Vec3& c : {Vec3(-1.5, 0.0, 1.2), Vec3(-2.2, -1.6, 1.2), Vec3(-2.2, 1.6, 1.2), Vec3(-0.3, -1.6, 1.2),
+                       Vec3(-0.3, 1.6, 1.2)})
+    for (int i = 0; i < 12; ++i)
+      grid.insertDepth(test::renderDepth(scene, d455(80, 60), test::cameraPose(c, i * kPi / 6), 2.5));
+  ExplorationConfig cfg;
+  const Vec3 p(-1.0, 0.0, 1.2);
+  ASSERT_EQ(grid.stateAt(p), VoxelState::Free);
+  ASSERT_EQ(grid.stateAt(Vec3(3.0, 0.0, 1.2)), VoxelState::Unknown);
+  const double door = visibleUnknownVolume(grid, p, 0.0, cfg);
+  const double wall = visibleUnknownVolume(grid, p, kPi / 2, cfg);
+  std::printf("unknown volume: towards the door %.2f m^3, towards the north wall %.2f m^3\n", door, wall);
+  EXPECT_GT(door, 3.0);
+  EXPECT_LT(wall, 0.1 * door);
+}

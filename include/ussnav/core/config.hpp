@@ -287,6 +287,9 @@ struct ExplorationConfig {
   double yaw_step_deg = 5.0;        // yaws tried per viewpoint
   int min_viewpoint_gain = 10;      // viewpoints seeing fewer frontier cells are dropped
   int max_viewpoints = 10;          // best viewpoints kept per frontier
+  double unknown_volume_weight = 0.0; // a frontier's gain adds this many cells per m^3 of unknown
+                                    // space its best viewpoint looks into (band z only): a door
+                                    // onto an unexplored room is worth more than its doorway's cells
   // What the camera has seen (CameraCoverage): a 2-D map of known free space at flight height
   // and of the cells the depth camera has looked at; known-but-unseen patches become targets.
   double seen_resolution = 0.25;    // cell size of that map, m
@@ -319,6 +322,7 @@ struct ExplorationConfig {
     v.field("yaw_step_deg", yaw_step_deg, 0.5, 90.0, "degrees");
     v.field("min_viewpoint_gain", min_viewpoint_gain, 0, 1000000, "cells");
     v.field("max_viewpoints", max_viewpoints, 1, 10000, "viewpoints");
+    v.field("unknown_volume_weight", unknown_volume_weight, 0.0, 100000.0, "cells per m^3");
     v.field("seen_resolution", seen_resolution, 0.05, 2.0, "m");
     v.field("seen_range", seen_range, 0.2, 50.0, "m");
     v.field("seen_pixel_stride", seen_pixel_stride, 1, 64, "pixels");

@@ -29,6 +29,14 @@ bool cellVisible(const RollingGrid& grid, const Vec3& position, double yaw, cons
 // viewpoint_clearance.
 bool viewpointSafe(const RollingGrid& grid, const Vec3& p, const ExplorationConfig& cfg);
 
+// Unknown volume (m^3) the camera at `position` with heading `yaw` looks into: rays over the
+// field of view (every ~4 deg across, ~5 deg up) march the window in voxel steps up to
+// sensor_range, stop at an occupied voxel or the window's edge, and integrate r^2 dr dOmega over
+// unknown voxels whose centre z lies in [band_z_min, band_z_max]. Unknown does not block: what
+// lies behind a frontier is what a viewpoint would reveal. Cost: ~300 rays x range / resolution.
+double visibleUnknownVolume(const RollingGrid& grid, const Vec3& position, double yaw,
+                            const ExplorationConfig& cfg);
+
 // Viewpoints of the frontier made of `cells` (centroid `centroid`) with gain at least
 // min_viewpoint_gain, best gain first (ties: sampling order), at most max_viewpoints.
 std::vector<Viewpoint> computeViewpoints(const RollingGrid& grid, const std::vector<Vec3i>& cells,
