@@ -39,11 +39,8 @@ struct ExplorationTarget {
   int region = -1;                   // region of the node nearest the best viewpoint, -1 none
 };
 
-// Gain units: a frontier cell counts frontier_gain_weight, an unseen cell unseen_gain_weight.
-struct TargetGainWeights {
-  double frontier_cell = 1.0;
-  double unseen_cell = 4.0;
-};
+// Gain units (set by the flight loop, episode.cpp): a visible frontier cell counts 1, plus
+// exploration.unknown_volume_weight per m^3 of unknown space behind it; a camera-unseen cell 4.
 
 struct PlanInput {
   const ConnectivityGraph* graph = nullptr;
