@@ -184,11 +184,15 @@ void FrontierFinder::dropVisited(const RollingGrid& grid, const CoverageMask& gc
     auto m = memo.find(c);
     if (m == memo.end()) m = memo.emplace(c, gcm.isVisited(unpack(c))).first;
     // open_in_visited keeps some cells of visited cells: those are judged again, in the window; one
-    // beyond it persists as it was judged (as every cell that left the window) until it re-enters.
+    // beyond it persists as it was judged (as every cell that left the window) until it re-enters
+    // and a frame makes its voxel known again. A cell back in the window but still Unknown there
+    // (forgotten, and behind a wall from where the UAV is now) has not been judged again: it
+    // persists, as in scanBox; dropping it would lose the way into a room nobody looked into.
     const Vec3i key = unpack(it->first);
     bool drop = m->second;
     if (drop && cfg_.open_in_visited)
-      drop = grid.inWindow(key) && !isFrontierVoxel(grid, gcm, key, cfg_, cfg_.remember_known_band ? &seen_ : nullptr);
+      drop = grid.inWindow(key) && grid.stateFast(key) != VoxelState::Unknown &&
+             !isFrontierVoxel(grid, gcm, key, cfg_, cfg_.remember_known_band ? &seen_ : nullptr);
     if (drop) {
       markAffected(it->second);
       it = cells_.erase(it);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include "support/input_error.hpp"
 #include "support/paths.hpp"
@@ -180,14 +181,25 @@ TEST(EvalReport, LongHorizonSplitAndPairedTableMatchHandComputation) {
 TEST(Suite, ShippedSuitesLoadAndTheLargeOneIsMultiRoom) {
   const auto dir = std::filesystem::path(USSNAV_SOURCE_DIR) / "configs/suites";
   int files = 0;
+  // Generated worlds are named style-seed-rN; none may sit in two suites (wide.yaml promises
+  // worlds no other suite uses, so its numbers are not the others' again).
+  std::map<std::string, std::string> generated;
   for (const auto& e : std::filesystem::directory_iterator(dir)) {
     if (e.path().extension() != ".yaml") continue;
     ++files;
     const Suite s = loadSuite(e.path());
     EXPECT_FALSE(s.worlds.empty()) << e.path();
     EXPECT_FALSE(s.goals.empty()) << e.path();
+    for (const SuiteWorld& sw : s.worlds) {
+      if (sw.kind != SuiteWorld::Kind::Generate) continue;
+      const std::string key = sw.generate.style + "-" + std::to_string(sw.generate.seed) + "-r" +
+                              std::to_string(sw.generate.target_rooms);
+      const auto [it, fresh] = generated.emplace(key, e.path().filename().string());
+      EXPECT_TRUE(fresh) << key << " in " << it->second << " and " << e.path().filename().string();
+    }
   }
-  EXPECT_GE(files, 3);
+  EXPECT_GE(files, 4);
+  EXPECT_GE(generated.size(), 28u);
 
   // configs/suites/large.yaml promises 16-24 rooms, a start in a hallway or corridor, and no goal
   // instance in the start room (every task multi-room).
