@@ -267,10 +267,22 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
     }
     if (approaching && uav.idle() && (uav.pose().position - approach.position).norm() <= ep.goal_tolerance) {
       const MappedObject* o = mapper.objects()->find(approach_object);
-      R.found_object = FoundObject{approach_object, o ? o->label : "", o ? o->centroid : Vec3::Zero()};
-      R.success = judgeFound(truth, uav.pose(), f.depth, ep.found_radius, cfg.perception.min_pixels);
-      R.end_reason = R.success ? "found" : "wrong_object";
-      end = true;
+      // The evidence may have changed on the way: a "sofa" chosen while the bed under it had been
+      // seen only a few times is, once the bed's views add up, a misreading (the same test as
+      // the choice below). Then no declaration: the choice below skips it, exploration goes on.
+      const MappedObject* by = o ? outvotedBy(*mapper.objects(), *o) : nullptr;
+      if (by && !goal.matches(by->label)) {
+        if (std::getenv("USSNAV_DEBUG_EPISODE") && misread_reported.insert(o->id).second)
+          std::fprintf(stderr, "[t=%.1f] object %d (%s, %d observations) not declared: a misreading of object %d (%s, %d)\n",
+                       t, o->id, o->label.c_str(), o->n_observations, by->id, by->label.c_str(), by->n_observations);
+        approaching = transit = false;
+        uav.setPath({});
+      } else {
+        R.found_object = FoundObject{approach_object, o ? o->label : "", o ? o->centroid : Vec3::Zero()};
+        R.success = judgeFound(truth, uav.pose(), f.depth, ep.found_radius, cfg.perception.min_pixels);
+        R.end_reason = R.success ? "found" : "wrong_object";
+        end = true;
+      }
     }
     // In transit, the object's own approach is tried again every replan period on the way.
     const bool retry_transit = approaching && transit && t - last_transit_check >= ep.replan_period_s;
