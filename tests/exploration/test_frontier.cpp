@@ -159,6 +159,11 @@ void expectClustersConsistent(const FrontierFinder& f, double res) {
   }
 }
 
+// Adds the solid box [x0, x1] x [y0, y1] x [z0, z1] to a scene (walls, floors, ceilings).
+void addBox(BoxScene& s, double x0, double y0, double z0, double x1, double y1, double z1) {
+  s.solids.push_back(Aabb::of(Vec3(x0, y0, z0), Vec3(x1, y1, z1)));
+}
+
 // 12 x 6 m furnished room: the 8 m window must roll to hold it.
 BoxScene longRoom() { return test::boxRoom(Vec3(-3.03, -2.87, 0.0), Vec3(9.03, 2.91, 2.73)); }
 
@@ -342,9 +347,7 @@ TEST(Frontier, RoomSeenThroughADoorKeepsItsFrontiersInVisitedCells) {
   // and an exploration can end with the second room unexplored (house_7, docs/eval.md); with
   // it they do, and the incremental cells still match the rule voxel for voxel.
   BoxScene s;
-  auto add = [&](double x0, double y0, double z0, double x1, double y1, double z1) {
-    s.solids.push_back(Aabb::of(Vec3(x0, y0, z0), Vec3(x1, y1, z1)));
-  };
+  const auto add = [&s](double x0, double y0, double z0, double x1, double y1, double z1) { addBox(s, x0, y0, z0, x1, y1, z1); };
   add(-1.2, -3.2, -0.2, 11.2, 8.2, 0.0);  // floor
   add(-1.2, -3.2, 2.7, 11.2, 8.2, 2.9);   // ceiling
   add(-1.2, -3.2, 0.0, -1.0, 8.2, 2.7);   // walls
@@ -403,9 +406,7 @@ TEST(Frontier, ForgottenFrontierBehindAWallPersistsInAVisitedCell) {
   // frontier must persist; dropping it (office-4 "toilet", docs/eval.md) hides the corridor's far
   // end, and the rooms off it, for the rest of the episode.
   BoxScene s;
-  auto add = [&](double x0, double y0, double z0, double x1, double y1, double z1) {
-    s.solids.push_back(Aabb::of(Vec3(x0, y0, z0), Vec3(x1, y1, z1)));
-  };
+  const auto add = [&s](double x0, double y0, double z0, double x1, double y1, double z1) { addBox(s, x0, y0, z0, x1, y1, z1); };
   add(-3.2, -0.4, -0.2, 20.2, 6.4, 0.0);  // floor
   add(-3.2, -0.4, 2.7, 20.2, 6.4, 2.9);   // ceiling
   add(-3.2, -0.4, 0.0, -3.0, 6.4, 2.7);   // west wall
