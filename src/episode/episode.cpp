@@ -159,6 +159,16 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
     return v;
   };
   std::set<int> misread_reported;         // debug output: objects reported as misreadings
+  // A few frames misreading another object (a bed called "sofa") are no find: `o` is outvoted by
+  // an object that is not the goal. Asked when an object is chosen and again when it is reached.
+  auto isMisreading = [&](const MappedObject& o, double now) {
+    const MappedObject* by = outvotedBy(*mapper.objects(), o);
+    if (!by || goal.matches(by->label)) return false;
+    if (std::getenv("USSNAV_DEBUG_EPISODE") && misread_reported.insert(o.id).second)
+      std::fprintf(stderr, "[t=%.1f] object %d (%s, %d observations) skipped: a misreading of object %d (%s, %d)\n", now,
+                   o.id, o.label.c_str(), o.n_observations, by->id, by->label.c_str(), by->n_observations);
+    return true;
+  };
   std::map<int, double> failed_objects;  // object id -> retry time
   std::map<int, int> object_failures;     // object id -> failed approaches (kMaxObjectTries: dropped)
   std::map<int, int> object_transits;     // object id -> transit flights towards it
@@ -268,13 +278,9 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
     if (approaching && uav.idle() && (uav.pose().position - approach.position).norm() <= ep.goal_tolerance) {
       const MappedObject* o = mapper.objects()->find(approach_object);
       // The evidence may have changed on the way: a "sofa" chosen while the bed under it had been
-      // seen only a few times is, once the bed's views add up, a misreading (the same test as
-      // the choice below). Then no declaration: the choice below skips it, exploration goes on.
-      const MappedObject* by = o ? outvotedBy(*mapper.objects(), *o) : nullptr;
-      if (by && !goal.matches(by->label)) {
-        if (std::getenv("USSNAV_DEBUG_EPISODE") && misread_reported.insert(o->id).second)
-          std::fprintf(stderr, "[t=%.1f] object %d (%s, %d observations) not declared: a misreading of object %d (%s, %d)\n",
-                       t, o->id, o->label.c_str(), o->n_observations, by->id, by->label.c_str(), by->n_observations);
+      // seen only a few times is, once the bed's views add up, a misreading. Then no
+      // declaration: the choice below skips it and the exploration goes on.
+      if (o && isMisreading(*o, t)) {
         approaching = transit = false;
         uav.setPath({});
       } else {
@@ -296,13 +302,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
         auto it = failed_objects.find(o.id);
         if (it != failed_objects.end() && it->second > t) continue;
         if (!inGoalRoom(o)) continue;
-        // A few frames misreading another object (a bed called "sofa") are no find.
-        if (const MappedObject* by = outvotedBy(*mapper.objects(), o); by && !goal.matches(by->label)) {
-          if (std::getenv("USSNAV_DEBUG_EPISODE") && misread_reported.insert(o.id).second)
-            std::fprintf(stderr, "[t=%.1f] object %d (%s, %d observations) skipped: a misreading of object %d (%s, %d)\n",
-                         t, o.id, o.label.c_str(), o.n_observations, by->id, by->label.c_str(), by->n_observations);
-          continue;
-        }
+        if (isMisreading(o, t)) continue;
         const double d = (o.centroid - uav.pose().position).norm();
         if (d < best_d) best_d = d, best = &o;
       }
