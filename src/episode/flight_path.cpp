@@ -64,6 +64,34 @@ std::optional<Vec3> snapFree(const OccupancyMap& inflated, const Vec3& p, double
   return out;
 }
 
+// A segment a-b that the inflated map shows blocked, with at least one end outside the window:
+// the map knows only the part inside. First a voxel path that treats the space beyond the window
+// as passable (checked again when the window gets there); else, with one end inside, a detour
+// from that end to where the segment crosses the window's edge (0.3 m inside), keeping the rest
+// of the segment when that does not cross what the window shows blocked either (the flight loop
+// would reject the path as soon as it is flown, and the same path would come back). The
+// polyline runs from a to b; nullopt when neither works.
+std::optional<std::vector<Vec3>> acrossWindowEdge(const RollingGrid& grid, const InflatedMap& inflated,
+                                                  const Vec3& a, const Vec3& b) {
+  if (auto through = gridPath(inflated, a, b, 3.0 * (b - a).norm() + 1.0, false, 1)) return through;
+  auto inWindow = [&](const Vec3& p) { return grid.inWindow(grid.keyOf(p)); };
+  if (inWindow(a) == inWindow(b)) return std::nullopt;
+  // From the end inside (u) towards the one outside (v).
+  const bool forward = inWindow(a);
+  const Vec3 &u = forward ? a : b, &v = forward ? b : a;
+  const double len = (v - u).norm();
+  double s_edge = 0.0;
+  for (double s = 0.0; s <= len; s += 0.5 * grid.resolution())
+    if (inWindow(u + (v - u) * (s / len))) s_edge = s;
+  const std::optional<Vec3> c = snapFree(inflated, u + (v - u) * (std::max(0.0, s_edge - 0.3) / len), 0.6);
+  if (!c || castRay(inflated, *c, v, false).blocked) return std::nullopt;
+  auto part = gridPath(inflated, u, *c, 3.0 * (*c - u).norm() + 1.0, false, 1);
+  if (!part) return std::nullopt;
+  part->push_back(v);
+  if (!forward) std::reverse(part->begin(), part->end());
+  return part;
+}
+
 std::optional<std::vector<Vec3>> planFrom(const ConnectivityGraph& g, const RollingGrid& grid,
                                           const InflatedMap& inflated, const Vec3& from, const Vec3& to,
                                           const FlightPathOptions& fo) {
@@ -92,35 +120,15 @@ std::optional<std::vector<Vec3>> planFrom(const ConnectivityGraph& g, const Roll
   for (size_t i = 1; i < pts.size(); ++i) {
     const Vec3 &a = pts[i - 1], &b = pts[i];
     if (castRay(inflated, a, b, false).blocked) {
-      if (!inWindow(a)) {
-        if (dbg) std::fprintf(stderr, "  path: blocked segment starts outside the window\n");
-        return std::nullopt;
-      }
-      if (!inWindow(b)) {
-        // The map only knows the part inside the window: a voxel path that treats the space
-        // beyond as passable (checked again when the window gets there) ...
-        if (auto through = gridPath(inflated, a, b, 3.0 * (b - a).norm() + 1.0, false, 1)) {
-          out.insert(out.end(), through->begin() + 1, through->end());
-          continue;
-        }
-        // ... else a detour to where the segment leaves it (0.3 m inside), keeping the rest
-        // when that does not cross what the window shows blocked either (the flight loop
-        // would reject the path as soon as it is flown, and the same path would come back).
-        const double len = (b - a).norm();
-        double s_exit = 0.0;
-        for (double s2 = 0.0; s2 <= len; s2 += 0.5 * grid.resolution())
-          if (inWindow(a + (b - a) * (s2 / len))) s_exit = s2;
-        const Vec3 c0 = a + (b - a) * (std::max(0.0, s_exit - 0.3) / len);
-        const std::optional<Vec3> c = snapFree(inflated, c0, 0.6);
-        std::optional<std::vector<Vec3>> part;
-        if (c && !castRay(inflated, *c, b, false).blocked)
-          part = gridPath(inflated, a, *c, 3.0 * (*c - a).norm() + 1.0, false, 1);
-        if (!part) {
-          if (dbg) std::fprintf(stderr, "  path: blocked segment leaving the window, no detour\n");
+      if (!inWindow(a) || !inWindow(b)) {
+        // The segment crosses the window's edge (the route leaves the window, or comes back
+        // into it after a stretch the window has forgotten).
+        auto across = acrossWindowEdge(grid, inflated, a, b);
+        if (!across) {
+          if (dbg) std::fprintf(stderr, "  path: blocked segment (%.2f %.2f %.2f)-(%.2f %.2f %.2f) across the window's edge, no detour\n", a.x(), a.y(), a.z(), b.x(), b.y(), b.z());
           return std::nullopt;
         }
-        out.insert(out.end(), part->begin() + 1, part->end());
-        out.push_back(b);
+        out.insert(out.end(), across->begin() + 1, across->end());
         continue;
       }
       // Inside the window the detour keeps to space the map has seen free: the unknown there is

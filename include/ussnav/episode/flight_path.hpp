@@ -3,10 +3,10 @@
 // (findGraphPath, edges re-checked against the grid), then line-of-sight shortcutting in the
 // grid inflated by the UAV's clearance, then every segment that still comes closer than the
 // clearance to a known obstacle is replaced by a voxel A* path in the inflated grid through
-// voxels seen free (one that leaves the window may cross the unknown space beyond it,
-// re-checked when the window gets there; inside the window unknown is what the sensors have not
-// looked at, such as the foot of a wall in the LiDAR's blind cone, and is not flown through
-// unless detour_through_unknown). When the graph has no path and the goal lies in the window, a voxel A*
+// voxels seen free (one that crosses the window's edge, leaving it or coming back into it,
+// may cross the unknown space beyond it, re-checked when the window gets there; inside the
+// window unknown is what the sensors have not looked at, such as the foot of a wall in the
+// LiDAR's blind cone, and is not flown through unless detour_through_unknown). When the graph has no path and the goal lies in the window, a voxel A*
 // through known free, inflated space is the fallback. When the UAV itself stands inside the
 // clearance margin (the map grew an obstacle next to it), the path first steps straight to the
 // nearest voxel with full clearance within 0.8 m that it can reach keeping `body_radius` from
