@@ -174,6 +174,8 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
   std::map<int, int> object_transits;     // object id -> transit flights towards it
   std::map<int, int> far_failures;       // object id -> no approach pose while farther than transit_radius
   constexpr int kMaxObjectTries = 3, kMaxTransits = 2, kMaxFarTries = 10;
+  constexpr int kLookFrames = 5;  // frames at an approach pose for the detector to see a goal object
+  int look_frames = 0;
   bool approaching = false;
   bool transit = false;  // approaching a graph node near the object, not the object itself
   double last_transit_check = -1e9;
@@ -280,7 +282,26 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
       // The evidence may have changed on the way: a "sofa" chosen while the bed under it had been
       // seen only a few times is, once the bed's views add up, a misreading. Then no
       // declaration: the choice below skips it and the exploration goes on.
+      // And the UAV must see a goal object from here itself: a pose chosen near the object's box
+      // may have a wall between the two that the map had not seen when the pose was chosen
+      // (office-14 "toilet": the pose in the corridor, the toilet 0.8 m away behind the
+      // bathroom wall). The detector misses an object in some frames, so it has kLookFrames
+      // frames at the pose; seeing none, this approach failed, as one with no path does.
+      const MappedObject* seen =
+          o ? seenWithin(*mapper.objects(), [&](const std::string& l) { return goal.matches(l); }, uav.pose().position,
+                         ep.found_radius, t)
+            : nullptr;
       if (o && isMisreading(*o, t)) {
+        approaching = transit = false;
+        uav.setPath({});
+      } else if ((!seen || !inGoalRoom(*seen)) && ++look_frames < kLookFrames) {
+        // hover and look again
+      } else if (!seen || !inGoalRoom(*seen)) {
+        if (std::getenv("USSNAV_DEBUG_EPISODE"))
+          std::fprintf(stderr, "[t=%.1f] object %d reached, but no goal object in view from (%.2f %.2f %.2f) in %d frames\n", t,
+                       approach_object, uav.pose().position.x(), uav.pose().position.y(), uav.pose().position.z(),
+                       kLookFrames);
+        failObject(approach_object);
         approaching = transit = false;
         uav.setPath({});
       } else {
@@ -309,6 +330,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
       // Fly `path` to `pose` (the path's end is where the UAV will really stop).
       auto startApproach = [&](int id, ApproachPose pose, const std::vector<Vec3>& path, bool is_transit) {
         approaching = true, transit = is_transit, approach_object = id, approach = pose;
+        look_frames = 0;
         approach.position = path.back();
         g = Goal{};
         g.active = true;

@@ -332,4 +332,16 @@ const MappedObject* outvotedBy(const ObjectLayer& layer, const MappedObject& o, 
   return best;
 }
 
+const MappedObject* seenWithin(const ObjectLayer& layer, const std::function<bool(const std::string&)>& matches,
+                               const Vec3& p, double radius, double time) {
+  const MappedObject* best = nullptr;
+  double best_d = radius;
+  for (const MappedObject& o : layer.objects()) {
+    if (o.last_seen != time || o.box.empty() || !matches(o.label)) continue;
+    const Vec3 d = (o.box.min - p).cwiseMax(p - o.box.max).cwiseMax(Vec3::Zero());
+    if (d.norm() <= best_d) best_d = d.norm(), best = &o;
+  }
+  return best;
+}
+
 }  // namespace ussnav

@@ -327,3 +327,35 @@ TEST(ObjectLayer, AFewMisreadFramesAreOutvotedByTheObjectTheyRead) {
   for (int i = 0; i < 2; ++i) layer.integrateCloud(cutX(bed, 0.6), "sofa", 0.9, 0, 0, 50 + i);
   EXPECT_EQ(outvotedBy(layer, labelled("sofa", 0, 2)), nullptr);
 }
+
+TEST(ObjectLayer, SeenWithinNamesOnlyAGoalObjectObservedNowAndNearby) {
+  ObjectLayer layer = makeLayer();
+  // A toilet seen at t = 1 and 2, a sink beside it seen at t = 3, a second toilet 4 m away seen
+  // at t = 3.
+  const auto toilet = boxSurface(Vec3(0, 0, 0), Vec3(0.7, 0.4, 0.8), 0.02, 0.003);
+  const auto sink = boxSurface(Vec3(1.2, 0, 0.6), Vec3(1.8, 0.5, 0.9), 0.02, 0.003);
+  const auto far = boxSurface(Vec3(4, 0, 0), Vec3(4.7, 0.4, 0.8), 0.02, 0.003);
+  layer.integrateCloud(toilet, "toilet", 0.9, 0, 0, 1.0);
+  layer.integrateCloud(toilet, "toilet", 0.9, 0, 0, 2.0);
+  layer.integrateCloud(sink, "sink", 0.9, 0, 0, 3.0);
+  layer.integrateCloud(far, "toilet", 0.9, 0, 0, 3.0);
+  ASSERT_EQ(layer.size(), 3u);
+  auto isToilet = [](const std::string& l) { return l == "toilet"; };
+  const Vec3 uav(0.35, -0.8, 0.5);  // 0.8 m in front of the first toilet's box
+  const MappedObject* now = seenWithin(layer, isToilet, uav, 1.0, 2.0);
+  ASSERT_NE(now, nullptr);
+  EXPECT_NEAR(now->centroid.x(), 0.35, 0.05);
+  // At t = 3 the near toilet is not in the frame (a wall between), only the sink is: no goal in view.
+  EXPECT_EQ(seenWithin(layer, isToilet, uav, 1.0, 3.0), nullptr);
+  // The far toilet, seen at t = 3, is beyond the radius from here, but within it from nearby.
+  EXPECT_EQ(seenWithin(layer, isToilet, uav, 3.0, 3.0), nullptr);
+  const MappedObject* far_seen = seenWithin(layer, isToilet, Vec3(4.35, -0.8, 0.5), 1.0, 3.0);
+  ASSERT_NE(far_seen, nullptr);
+  EXPECT_NEAR(far_seen->centroid.x(), 4.35, 0.05);
+  // Of two in view, the nearer.
+  layer.integrateCloud(toilet, "toilet", 0.9, 0, 0, 4.0);
+  layer.integrateCloud(far, "toilet", 0.9, 0, 0, 4.0);
+  const MappedObject* nearer = seenWithin(layer, isToilet, Vec3(1.0, -0.5, 0.5), 5.0, 4.0);
+  ASSERT_NE(nearer, nullptr);
+  EXPECT_NEAR(nearer->centroid.x(), 0.35, 0.05);
+}

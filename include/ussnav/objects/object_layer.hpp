@@ -131,4 +131,11 @@ class ObjectLayer {
 const MappedObject* outvotedBy(const ObjectLayer& layer, const MappedObject& o, double shared = 0.5,
                                double ratio = 3.0);
 
+// An object observed at `time` (its last_seen) whose label `matches` and whose box lies within
+// `radius` of `p`, or nullptr: what the UAV itself sees of a goal from where it stands. A pose
+// chosen near an object's box may have a wall between the two that the map had not seen yet;
+// from there the detector does not see the object, and nothing may be declared.
+const MappedObject* seenWithin(const ObjectLayer& layer, const std::function<bool(const std::string&)>& matches,
+                               const Vec3& p, double radius, double time);
+
 }  // namespace ussnav
