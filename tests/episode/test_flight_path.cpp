@@ -15,6 +15,21 @@
 
 using namespace ussnav;
 
+namespace {
+
+void addBox(test::BoxScene& s, double x0, double y0, double z0, double x1, double y1, double z1) {
+  s.solids.push_back(Aabb(Vec3(x0, y0, z0), Vec3(x1, y1, z1)));
+}
+
+// From q to the nearest true solid of the scene.
+double distanceToSolids(const test::BoxScene& s, const Vec3& q) {
+  double d = 1e9;
+  for (const Aabb& box : s.solids) d = std::min(d, (q - q.cwiseMax(box.min).cwiseMin(box.max)).norm());
+  return d;
+}
+
+}  // namespace
+
 TEST(FlightPath, NoSegmentCrossesAnObstacleNearTheWindowEdge) {
   // A corridor closed at x = 6.6-6.8 by a wall with a 0.9 m door off its centre line. Mapped
   // flying through to x = 13 and back to x = 3, where the window ends at x = 7, just past the
@@ -114,19 +129,16 @@ TEST(FlightPath, LadderPassesANarrowDoorIntoForgottenSpace) {
   // hospital, "sofa": the UAV boxed in a ward ended the episode "explored"). The connectivity
   // graph still knows the corridor.
   test::BoxScene s;
-  auto box = [&](double x0, double y0, double z0, double x1, double y1, double z1) {
-    s.solids.push_back(Aabb(Vec3(x0, y0, z0), Vec3(x1, y1, z1)));
-  };
-  box(-0.5, -0.5, -0.2, 14.5, 8.6, 0.0);   // floor
-  box(-0.5, -0.5, 2.7, 14.5, 8.6, 2.9);    // ceiling
-  box(-0.2, -0.2, 0.0, 7.2, 0.0, 2.7);     // room, south wall
-  box(-0.2, 0.0, 0.0, 0.0, 6.0, 2.7);      // room, west wall
-  box(6.98, 0.0, 0.0, 7.18, 6.0, 2.7);     // room, east wall
-  box(-0.2, 6.0, 0.0, 6.18, 6.2, 2.7);     // wall west of the door
-  box(6.98, 6.0, 0.0, 14.2, 6.2, 2.7);     // wall east of the door (the corridor's south wall)
-  box(-0.2, 8.2, 0.0, 14.2, 8.4, 2.7);     // corridor, north wall
-  box(-0.4, 6.2, 0.0, -0.2, 8.2, 2.7);     // corridor, west end
-  box(14.0, 6.2, 0.0, 14.2, 8.2, 2.7);     // corridor, east end
+  addBox(s, -0.5, -0.5, -0.2, 14.5, 8.6, 0.0);   // floor
+  addBox(s, -0.5, -0.5, 2.7, 14.5, 8.6, 2.9);    // ceiling
+  addBox(s, -0.2, -0.2, 0.0, 7.2, 0.0, 2.7);     // room, south wall
+  addBox(s, -0.2, 0.0, 0.0, 0.0, 6.0, 2.7);      // room, west wall
+  addBox(s, 6.98, 0.0, 0.0, 7.18, 6.0, 2.7);     // room, east wall
+  addBox(s, -0.2, 6.0, 0.0, 6.18, 6.2, 2.7);     // wall west of the door
+  addBox(s, 6.98, 6.0, 0.0, 14.2, 6.2, 2.7);     // wall east of the door (the corridor's south wall)
+  addBox(s, -0.2, 8.2, 0.0, 14.2, 8.4, 2.7);     // corridor, north wall
+  addBox(s, -0.4, 6.2, 0.0, -0.2, 8.2, 2.7);     // corridor, west end
+  addBox(s, 14.0, 6.2, 0.0, 14.2, 8.2, 2.7);     // corridor, east end
   const double z = 1.2;
   test::SceneFlight f(Vec3(12.0, 7.2, z));
   f.fly(s, Vec3(12.0, 7.2, z), Vec3(6.58, 7.2, z), kPi);
@@ -163,8 +175,7 @@ TEST(FlightPath, LadderPassesANarrowDoorIntoForgottenSpace) {
     const int n = int(std::ceil((b - a).norm() / 0.05));
     for (int k = 0; k <= n; ++k) {
       const Vec3 q = a + (b - a) * (double(k) / n);
-      double d = 1e9;  // to the nearest true solid
-      for (const Aabb& box : s.solids) d = std::min(d, (q - q.cwiseMax(box.min).cwiseMin(box.max)).norm());
+      const double d = distanceToSolids(s, q);
       ASSERT_GE(d, 0.25) << "the path passes " << d << " m from a wall at (" << q.transpose() << ")";
       if (q.y() > 6.0 && q.y() < 6.2) through_door = true;
     }
@@ -181,22 +192,19 @@ TEST(FlightPath, RouteComingBackIntoTheWindowPassesADoor) {
   // north corridor, where the window (x 9-17) has forgotten the west end. The route to the south
   // corridor's east end leaves the window westwards and comes back into it through the door: a
   // segment that starts outside the window and that the inflated door blocks (office-4
-  // "toilet": every target behind such a route "unreachable" at once, the episode "explored").
+  // "toilet": the frontiers of a room behind such a route "unreachable", then blacklisted).
   test::BoxScene s;
-  auto box = [&](double x0, double y0, double z0, double x1, double y1, double z1) {
-    s.solids.push_back(Aabb(Vec3(x0, y0, z0), Vec3(x1, y1, z1)));
-  };
-  box(-0.5, -2.6, -0.2, 14.5, 2.6, 0.0);  // floor
-  box(-0.5, -2.6, 2.7, 14.5, 2.6, 2.9);   // ceiling
-  box(-0.4, -2.4, 0.0, 14.2, -2.2, 2.7);  // south wall
-  box(-0.4, 2.2, 0.0, 14.2, 2.4, 2.7);    // north wall
-  box(-0.4, -2.2, 0.0, -0.2, 2.2, 2.7);   // west wall
-  box(14.0, -2.2, 0.0, 14.2, 2.2, 2.7);   // east wall
-  box(1.8, -0.6, 0.0, 10.8, 0.6, 2.7);    // the block between the corridors, with a slit at
-  box(12.8, -0.6, 0.0, 14.0, 0.6, 2.7);   // x 10.8-12.8, z 1.0-1.4 (too low to fly through)
-  box(10.8, -0.6, 0.0, 12.8, 0.6, 1.0);   // through which the door is seen from the north
-  box(10.8, -0.6, 1.4, 12.8, 0.6, 2.7);   // corridor
-  box(10.0, -2.2, 0.0, 10.2, -1.5, 2.7);  // the door's jamb: the door is y -1.5 .. -0.6
+  addBox(s, -0.5, -2.6, -0.2, 14.5, 2.6, 0.0);  // floor
+  addBox(s, -0.5, -2.6, 2.7, 14.5, 2.6, 2.9);   // ceiling
+  addBox(s, -0.4, -2.4, 0.0, 14.2, -2.2, 2.7);  // south wall
+  addBox(s, -0.4, 2.2, 0.0, 14.2, 2.4, 2.7);    // north wall
+  addBox(s, -0.4, -2.2, 0.0, -0.2, 2.2, 2.7);   // west wall
+  addBox(s, 14.0, -2.2, 0.0, 14.2, 2.2, 2.7);   // east wall
+  addBox(s, 1.8, -0.6, 0.0, 10.8, 0.6, 2.7);    // the block between the corridors, with a slit at
+  addBox(s, 12.8, -0.6, 0.0, 14.0, 0.6, 2.7);   // x 10.8-12.8, z 1.0-1.4 (too low to fly through)
+  addBox(s, 10.8, -0.6, 0.0, 12.8, 0.6, 1.0);   // through which the door is seen from the north
+  addBox(s, 10.8, -0.6, 1.4, 12.8, 0.6, 2.7);   // corridor
+  addBox(s, 10.0, -2.2, 0.0, 10.2, -1.5, 2.7);  // the door's jamb: the door is y -1.5 .. -0.6
   const double z = 1.2;
   test::SceneFlight f(Vec3(13.0, -1.4, z));
   f.fly(s, Vec3(13.0, -1.4, z), Vec3(10.6, -1.1, z), kPi);
@@ -229,8 +237,7 @@ TEST(FlightPath, RouteComingBackIntoTheWindowPassesADoor) {
       for (int k = 0; k <= n; ++k) {
         const Vec3 q = a + (b - a) * (double(k) / n);
         if (!f.grid.inWindow(f.grid.keyOf(q))) continue;  // checked again when the window gets there
-        double d = 1e9;  // to the nearest true solid
-        for (const Aabb& box : s.solids) d = std::min(d, (q - q.cwiseMax(box.min).cwiseMin(box.max)).norm());
+        const double d = distanceToSolids(s, q);
         ASSERT_GE(d, 0.25) << "clearance " << clearance << ": the path passes " << d << " m from a wall at ("
                            << q.transpose() << ")";
       }
