@@ -291,12 +291,13 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
           o ? seenWithin(*mapper.objects(), [&](const std::string& l) { return goal.matches(l); }, uav.pose().position,
                          ep.found_radius, t)
             : nullptr;
+      const bool in_view = seen && inGoalRoom(*seen);
       if (o && isMisreading(*o, t)) {
         approaching = transit = false;
         uav.setPath({});
-      } else if ((!seen || !inGoalRoom(*seen)) && ++look_frames < kLookFrames) {
+      } else if (!in_view && ++look_frames < kLookFrames) {
         // hover and look again
-      } else if (!seen || !inGoalRoom(*seen)) {
+      } else if (!in_view) {
         if (std::getenv("USSNAV_DEBUG_EPISODE"))
           std::fprintf(stderr, "[t=%.1f] object %d reached, but no goal object in view from (%.2f %.2f %.2f) in %d frames\n", t,
                        approach_object, uav.pose().position.x(), uav.pose().position.y(), uav.pose().position.z(),

@@ -6,11 +6,11 @@
 // voxels seen free (one that crosses the window's edge, leaving it or coming back into it,
 // may cross the unknown space beyond it, re-checked when the window gets there; inside the
 // window unknown is what the sensors have not looked at, such as the foot of a wall in the
-// LiDAR's blind cone, and is not flown through unless detour_through_unknown). When the graph has no path and the goal lies in the window, a voxel A*
-// through known free, inflated space is the fallback. When the UAV itself stands inside the
-// clearance margin (the map grew an obstacle next to it), the path first steps straight to the
-// nearest voxel with full clearance within 0.8 m that it can reach keeping `body_radius` from
-// every mapped obstacle. nullopt when no safe path is found: a segment is never returned that
+// LiDAR's blind cone, and is not flown through unless detour_through_unknown). When the graph
+// has no path and the goal lies in the window, a voxel A* through known free, inflated space is
+// the fallback. When the UAV itself stands inside the clearance margin (the map grew an
+// obstacle next to it), the path first steps straight to the nearest voxel with full clearance
+// within 0.8 m that it can reach keeping `body_radius` from every mapped obstacle. nullopt when no safe path is found: a segment is never returned that
 // the inflated map shows blocked. Paths stay in the band [z_min, z_max] (voxels outside it
 // count as obstacles; graph points are clamped into a narrower band around flight height,
 // where doors and furniture leave the most room).
