@@ -55,6 +55,7 @@ int CoarseDecider::choose(const PlanInput& in, const std::vector<RegionCandidate
     r.adjacent = s.adjacent;
     for (const ObjectBrief& o : s.objects) r.objects.push_back(o.label);
     for (const ObjectBrief& o : s.beyond) r.beyond.push_back(o.label);
+    r.corridor_shaped = corridorShaped(s);
     if (auto it = semantics_.find(s.id); it != semantics_.end()) {
       r.label = it->second.label;
       r.description = it->second.description;

@@ -62,6 +62,15 @@ double number(const std::filesystem::path& p, size_t line, const std::string& co
   throw InputError(p.string(), "row " + std::to_string(line) + ", column " + col, "'" + s + "' is not a number");
 }
 
+// A name with its spaces, underscores and hyphens dropped: "armchair" names ArmChair ("arm chair"),
+// "nightstand" the alias "night stand".
+std::string joined(const std::string& s) {
+  std::string out;
+  for (char c : s)
+    if (c != ' ' && c != '_' && c != '-') out += c;
+  return out;
+}
+
 void normalise(std::vector<double>& v) {
   double s = 0.0;
   for (double x : v) s += x;
@@ -187,6 +196,25 @@ std::shared_ptr<const CommonsensePriors> CommonsensePriors::load(const std::file
   for (const Row& r : P->rows_)
     if (std::find(P->categories_.begin(), P->categories_.end(), r.category) == P->categories_.end())
       P->categories_.push_back(r.category);
+
+  // Matterport3D's raw labels -> mpcat40 ("nightstand" -> chest_of_drawers, "monitor" ->
+  // tv_monitor): the annotators' own synonym table. Kept only where the category has a row.
+  const auto map_path = dir / "mp3d_category_mapping.tsv";
+  const auto mm = readTable(map_path, '\t');
+  if (mm[0].size() != 4 || mm[0][0] != "raw_category" || mm[0][3] != "mpcat40")
+    throw InputError(map_path.string(), "header", "expected raw_category, category, count, mpcat40");
+  std::map<std::string, double> best_count;
+  for (size_t i = 1; i < mm.size(); ++i) {
+    if (mm[i].size() != 4) throw InputError(map_path.string(), "row " + std::to_string(i), "expected 4 tab-separated columns");
+    const double count = number(map_path, i, "count", mm[i][2]);
+    const std::string cat = categoryWords(trim(mm[i][3]));
+    if (std::none_of(P->rows_.begin(), P->rows_.end(), [&](const Row& r) { return r.category == cat; })) continue;
+    for (const std::string& label : {lower(trim(mm[i][0])), lower(trim(mm[i][1]))}) {
+      if (label.empty()) continue;
+      auto [it, fresh] = best_count.try_emplace(label, count);
+      if (fresh || count > it->second) it->second = count, P->mp3d_[label] = cat;
+    }
+  }
   return P;
 }
 
@@ -215,20 +243,23 @@ std::vector<double> CommonsensePriors::roomsGivenObject(const std::string& label
   }
   std::vector<double> sum(rooms_.size(), 0.0);
   int n = 0;
-  // Exact category words (or aliases) first: the label's own, else those of a WordNet synonym
+  // Exact category words (or aliases) first: the label's own, else the category Matterport3D's
+  // annotators filed it under ("nightstand" -> chest of drawers), else those of a WordNet synonym
   // of it ("tv" -> "television", an alias of tv_monitor). A label that names a category is not
   // widened by its synonyms: "toilet" is also a "stool" and a "pot" in WordNet, which put a
   // kitchen's pots into every bathroom. Otherwise every row within match_cosine.
   auto addNamed = [&](const std::vector<std::string>& keys) {
     for (const Row& r : rows_)
       if (std::any_of(keys.begin(), keys.end(), [&](const std::string& k) {
-            return std::find(r.names.begin(), r.names.end(), k) != r.names.end();
+            return std::any_of(r.names.begin(), r.names.end(), [&](const std::string& x) { return joined(x) == joined(k); });
           })) {
         for (size_t k = 0; k < sum.size(); ++k) sum[k] += r.p[k];
         ++n;
       }
   };
   addNamed({key});
+  if (n == 0)
+    if (auto it = mp3d_.find(key); it != mp3d_.end()) addNamed({it->second});
   if (n == 0) {
     std::vector<std::string> synonyms;
     for (const auto& syn : wordnet::synonymsOf(key)) synonyms.push_back(lower(syn));

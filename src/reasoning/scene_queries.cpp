@@ -95,6 +95,7 @@ RegionPick pickRegionForRequest(const SceneGraph& g, const Instruction& ins, con
       st.id = s.id;
       for (const ObjectBrief& o : s.objects) st.objects.push_back(o.label);
       for (const ObjectBrief& o : s.beyond) st.beyond.push_back(o.label);
+      st.corridor_shaped = corridorShaped(s);
       p.score = ins.targets.empty() ? 0.0 : 0.5 * builtin.targetChance(q, st);
       if (room_ok) p.score += 0.6;
       p.object = -1;

@@ -59,7 +59,13 @@ TEST(BuiltinReasoner, LabelsRegionsFromTheirObjects) {
   EXPECT_EQ(R.labelRegion(region(4, {"sofa", "coffee table"})).label, "living room");
   const RegionSemantics corridor = R.labelRegion(region(5, {}, Vec3(0, 0, 1), Vec3(9, 1.2, 1)));
   EXPECT_EQ(corridor.label, "hallway");
-  // Unknown labels give no evidence: a wardrobe and a nightstand alone stay unconfident.
+  // A corridor's shape counts as one piece of evidence: a plant (a living room's, by the priors)
+  // and a trash can do not make a corridor a living room; a toilet and a sink make a narrow
+  // washroom a bathroom all the same.
+  EXPECT_EQ(R.labelRegion(region(10, {"plant", "trash can"}, Vec3(0, 0, 1), Vec3(9, 1.2, 1))).label, "hallway");
+  EXPECT_EQ(R.labelRegion(region(11, {"plant", "trash can"})).label, "living room");
+  EXPECT_EQ(R.labelRegion(region(12, {"toilet", "sink"}, Vec3(0, 0, 1), Vec3(6, 1.5, 1))).label, "bathroom");
+  // One object alone leaves the label unconfident.
   EXPECT_LT(R.labelRegion(region(9, {"nightstand"})).confidence, 0.3);
   const RegionSemantics bare = R.labelRegion(region(6, {}));
   EXPECT_EQ(bare.label, "");
@@ -225,7 +231,7 @@ TEST(CoarseQuery, RepliesAreValidated) {
 }
 
 TEST(BuiltinReasoner, LooksBeyondFrontiersByRoomAdjacency) {
-  // A hallway (named from its shape, no objects) and a kitchen, both with frontiers of equal
+  // A hallway (a corridor's shape, no objects) and a kitchen, both with frontiers of equal
   // utility and neither holding the target. Bedrooms open onto hallways, not onto kitchens.
   BuiltinReasoner R(priors());
   auto withFrontiers = [](RegionState r) {
@@ -233,8 +239,7 @@ TEST(BuiltinReasoner, LooksBeyondFrontiersByRoomAdjacency) {
     return r;
   };
   RegionState hall = withFrontiers(state(1, {}));
-  hall.label = "hallway";
-  hall.label_confidence = 0.3;
+  hall.corridor_shaped = true;
   const RegionState kitchen = withFrontiers(state(2, {"fridge", "microwave"}));
   CoarseQuery q;
   q.instruction = interpretInstruction("bed", *priors());

@@ -47,6 +47,12 @@ TEST(Priors, ObjectsPointToTheirRooms) {
   EXPECT_EQ(mostLikelyRoom("shower"), "bathroom");
   EXPECT_EQ(mostLikelyRoom("tv"), mostLikelyRoom("television"));  // a WordNet synonym of an alias
   EXPECT_FALSE(priors()->roomsGivenObject("tv").empty());
+  // Through Matterport3D's raw-label table: a nightstand is filed under chest_of_drawers, a
+  // monitor under tv_monitor (neither is a category name, and the text encoder matched neither).
+  EXPECT_EQ(mostLikelyRoom("nightstand"), "bedroom");
+  EXPECT_EQ(mostLikelyRoom("monitor"), "office");
+  // Spelled without the table's space: ArmChair, not MP3D's chair (which leans to kitchens too).
+  EXPECT_EQ(priors()->roomsGivenObject("armchair"), priors()->roomsGivenObject("arm chair"));
   const auto row = priors()->roomsGivenObject("bed");
   double sum = 0.0;
   for (double p : row) sum += p;
@@ -83,7 +89,7 @@ TEST(Priors, MalformedTablesAreRejectedWithTheFileName) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   for (const char* f : {"room_types.tsv", "room_adjacency.tsv", "procthor_object_room_weights.tsv",
-                        "sgnav_object_room_cooccurrence.csv", "mpcat40.tsv"})
+                        "sgnav_object_room_cooccurrence.csv", "mpcat40.tsv", "mp3d_category_mapping.tsv"})
     fs::copy_file(CommonsensePriors::defaultDir() / f, dir / f);
   const std::shared_ptr<const TextEncoder> enc = makeTextEncoder("ngram");
   EXPECT_NO_THROW(CommonsensePriors::load(dir, enc));
@@ -99,6 +105,18 @@ TEST(Priors, MalformedTablesAreRejectedWithTheFileName) {
   }
   fs::remove(dir / "room_adjacency.tsv");
   EXPECT_THROW(CommonsensePriors::load(dir, enc), InputError);
+  fs::copy_file(CommonsensePriors::defaultDir() / "room_adjacency.tsv", dir / "room_adjacency.tsv");
+  {
+    std::ofstream out(dir / "mp3d_category_mapping.tsv", std::ios::app);
+    out << "bedside table\tnightstand\tmany\tchest_of_drawers\n";
+  }
+  try {
+    CommonsensePriors::load(dir, enc);
+    FAIL() << "a count that is not a number accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("mp3d_category_mapping.tsv"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("count"), std::string::npos) << e.what();
+  }
   fs::remove_all(dir);
 }
 

@@ -1,13 +1,14 @@
 #pragma once
 // The offline reasoner (reasoner.hpp, `builtin`). With P(room | object) from the priors:
 //  - a region's room distribution is the mean of its objects' rows mixed with a uniform share
-//    (weight 0.5), its label the most likely room, its confidence 1 - exp(-n / 2) for n objects
-//    with a prior; no such object: "hallway" when the region is elongated (>= 3:1), else unknown;
+//    (weight 0.5), a corridor's shape (corridorShaped: >= 3:1) counting as one more object whose
+//    row is "hallway"; its label the most likely room, its confidence 1 - exp(-n / 2) for n
+//    pieces of evidence (objects with a prior, the shape); none: unknown;
 //  - the target's affinity A(room) = max over the instruction's targets of P(room | target),
 //    scaled to max 1; a room constraint multiplies other rooms by 0.05;
 //  - a region's own chance s_self = conf * sum_k P(k | region) A(k) + (1 - conf) * mean_k A(k)
-//    (a region named "hallway" from its shape alone counts as a hallway with the label's
-//    confidence), and 1 when it already holds an object matching a target; 0.5 everywhere when
+//    over its objects only (a corridor without objects with a prior counts as a hallway at
+//    confidence 0.3), and 1 when it already holds an object matching a target; 0.5 everywhere when
 //    no target has a prior;
 //  - frontiers look into unknown space: half of their gain is taken to lie in the room next
 //    door, whose type follows the room-adjacency prior from the region's type: s_next = conf *
@@ -41,8 +42,10 @@ class BuiltinReasoner : public Reasoner {
   RegionSemantics labelRegion(const RegionSummary& region) override;
   CoarseDecision chooseRegion(const CoarseQuery& query) override;
 
-  // P(room type) of a set of object labels (size priors.rooms()); `known` = labels with a prior.
-  std::vector<double> roomDistribution(const std::vector<std::string>& labels, int* known = nullptr) const;
+  // P(room type) of a set of object labels (size priors.rooms()), a corridor's shape counting as
+  // one more object that says "hallway"; `known` = the evidence: labels with a prior (+ 1 shape).
+  std::vector<double> roomDistribution(const std::vector<std::string>& labels, double* known = nullptr,
+                                       bool corridor_shaped = false) const;
   // The chance s above for one region of the query.
   double targetChance(const CoarseQuery& q, const RegionState& r) const;
 

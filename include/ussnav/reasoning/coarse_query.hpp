@@ -33,6 +33,7 @@ struct RegionState {
   double distance_m = -1.0;         // path length to it, m; -1 = no target
   double best_utility = 0.0;        // max over its targets of gain / cost_s (builtin only; not sent to an LLM)
   int visits = 0;                   // times the UAV entered it
+  bool corridor_shaped = false;     // corridorShaped(summary) (builtin only; not sent to an LLM)
 };
 
 struct CoarseQuery {

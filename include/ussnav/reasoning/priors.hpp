@@ -8,13 +8,18 @@
 //    log-likelihoods: exp(score);
 //  - MP3D's mpcat40 table (MIT): the NYU40 classes and raw labels each SG-Nav category covers,
 //    as aliases (tv_monitor: television; chest_of_drawers: dresser, night stand);
+//  - MP3D's category_mapping (MIT): 1,659 raw labels annotators gave objects in 90 scanned houses,
+//    each filed under an mpcat40 category ("nightstand" -> chest_of_drawers, "monitor" ->
+//    tv_monitor), consulted when the label names no category itself;
 //  - room_types.tsv (the room types, aliases, which table column means each) and
 //    room_adjacency.tsv (which room types open onto each other), written for this project.
-// P(room | object label): the label is matched to every table category by the text encoder
-// (cosine >= match_cosine; "couch" -> Sofa, "tv" -> tv_monitor by its alias television; failing
-// that, the nearest categories within cosine 0.6 at half weight: "refrigerator" -> Fridge); each matching
-// row is normalised over the rooms its table covers, and the rows are averaged. Rows that say
-// nothing (all zero) are skipped. A label matching no category has no prior (empty vector).
+// P(room | object label): the label is matched to the categories' names and aliases (spaces
+// aside: "armchair" is ArmChair), else through the MP3D raw-label table, else through a WordNet
+// synonym ("tv" -> tv_monitor by its alias television), else by the text encoder to every
+// category within match_cosine ("couch" -> Sofa), failing that to the nearest within cosine 0.6 at
+// half weight ("refrigerator" -> Fridge). Each matching row is normalised over the rooms its table
+// covers, and the rows are averaged. Rows that say nothing (all zero) are skipped. A label
+// matching no category has no prior (empty vector).
 // Thread-safe for const use; roomsGivenObject() caches per label.
 
 #include <filesystem>
@@ -37,8 +42,8 @@ struct RoomType {
 class CommonsensePriors {
  public:
   // Reads dir/{room_types.tsv, room_adjacency.tsv, procthor_object_room_weights.tsv,
-  // sgnav_object_room_cooccurrence.csv, mpcat40.tsv}. Throws InputError naming the file and line/field on a
-  // missing file or a malformed row.
+  // sgnav_object_room_cooccurrence.csv, mpcat40.tsv, mp3d_category_mapping.tsv}. Throws InputError
+  // naming the file and line/field on a missing file or a malformed row.
   static std::shared_ptr<const CommonsensePriors> load(const std::filesystem::path& dir, std::shared_ptr<const TextEncoder> encoder,
                                                          double match_cosine = 0.85);
   // The repository's data/priors (next to configs/), or empty when not found.
@@ -69,6 +74,7 @@ class CommonsensePriors {
   std::vector<std::string> categories_;
   std::shared_ptr<const TextEncoder> encoder_;
   double match_cosine_ = 0.85;
+  std::map<std::string, std::string> mp3d_;  // raw label (lower case) -> a row's category words
   mutable std::mutex mutex_;
   mutable std::map<std::string, std::vector<double>> cache_;
 };

@@ -38,6 +38,9 @@ struct RegionSummary {
   std::vector<ObjectBrief> beyond;
 };
 
+// A corridor's shape: node centroids spread at least 3:1 in the plane, over 3 nodes or more.
+inline bool corridorShaped(const RegionSummary& s) { return s.nodes >= 3 && s.elongation >= 3.0; }
+
 struct RegionSemantics {
   std::string label;                // room type, e.g. "bedroom"; "" = unknown
   std::string description;          // one sentence
