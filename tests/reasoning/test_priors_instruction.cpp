@@ -83,6 +83,20 @@ TEST(Priors, RoomNamesAliasesAndAdjacency) {
   EXPECT_DOUBLE_EQ(P.adjacency(P.roomIndex("gym"), P.roomIndex("bathroom")), 0.1);
 }
 
+// Loading the priors from `dir` throws an InputError whose message names `file` and `field`.
+void expectLoadErrorNames(const std::filesystem::path& dir, const std::shared_ptr<const TextEncoder>& enc,
+                          const std::string& file, const std::string& field, int line) {
+  SCOPED_TRACE("called from line " + std::to_string(line));
+  try {
+    CommonsensePriors::load(dir, enc);
+    ADD_FAILURE() << "malformed " << file << " accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(file), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+  }
+}
+#define EXPECT_LOAD_ERROR_NAMES(dir, enc, file, field) expectLoadErrorNames(dir, enc, file, field, __LINE__)
+
 TEST(Priors, MalformedTablesAreRejectedWithTheFileName) {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / "ussnav_bad_priors";
@@ -97,12 +111,7 @@ TEST(Priors, MalformedTablesAreRejectedWithTheFileName) {
     std::ofstream out(dir / "room_adjacency.tsv", std::ios::app);
     out << "bedroom\tnarnia\t1\n";
   }
-  try {
-    CommonsensePriors::load(dir, enc);
-    FAIL() << "unknown room accepted";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("room_adjacency.tsv"), std::string::npos) << e.what();
-  }
+  EXPECT_LOAD_ERROR_NAMES(dir, enc, "room_adjacency.tsv", "row");  // an unknown room
   fs::remove(dir / "room_adjacency.tsv");
   EXPECT_THROW(CommonsensePriors::load(dir, enc), InputError);
   fs::copy_file(CommonsensePriors::defaultDir() / "room_adjacency.tsv", dir / "room_adjacency.tsv");
@@ -110,13 +119,7 @@ TEST(Priors, MalformedTablesAreRejectedWithTheFileName) {
     std::ofstream out(dir / "mp3d_category_mapping.tsv", std::ios::app);
     out << "bedside table\tnightstand\tmany\tchest_of_drawers\n";
   }
-  try {
-    CommonsensePriors::load(dir, enc);
-    FAIL() << "a count that is not a number accepted";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("mp3d_category_mapping.tsv"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("count"), std::string::npos) << e.what();
-  }
+  EXPECT_LOAD_ERROR_NAMES(dir, enc, "mp3d_category_mapping.tsv", "count");  // not a number
   fs::remove_all(dir);
 }
 
