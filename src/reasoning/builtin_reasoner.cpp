@@ -44,7 +44,7 @@ std::string article(const std::string& w) {
 }  // namespace
 
 BuiltinReasoner::BuiltinReasoner(std::shared_ptr<const CommonsensePriors> priors, double min_chance_ratio)
-    : priors_(std::move(priors)), min_chance_ratio_(min_chance_ratio) {}
+    : priors_(std::move(priors)), min_chance_ratio_(min_chance_ratio), hallway_(priors_->roomIndex("hallway")) {}
 
 std::vector<double> BuiltinReasoner::roomDistribution(const std::vector<std::string>& labels, double* known,
                                                       bool corridor_shaped) const {
@@ -57,8 +57,8 @@ std::vector<double> BuiltinReasoner::roomDistribution(const std::vector<std::str
     for (size_t k = 0; k < R; ++k) p[k] += row[k];
     n += 1.0;
   }
-  if (const int h = priors_->roomIndex("hallway"); corridor_shaped && h >= 0) {
-    p[size_t(h)] += kShapeVotes;
+  if (corridor_shaped && hallway_ >= 0) {
+    p[size_t(hallway_)] += kShapeVotes;
     n += kShapeVotes;
   }
   if (known) *known = n;
@@ -135,9 +135,9 @@ double BuiltinReasoner::targetChance(const CoarseQuery& q, const RegionState& r)
   double known = 0.0;
   auto P = roomDistribution(r.objects, &known);
   double conf = 1.0 - std::exp(-known / 2.0);
-  if (const int h = priors_->roomIndex("hallway"); known == 0.0 && r.corridor_shaped && h >= 0) {
+  if (known == 0.0 && r.corridor_shaped && hallway_ >= 0) {
     std::fill(P.begin(), P.end(), 0.0);
-    P[size_t(h)] = 1.0;
+    P[size_t(hallway_)] = 1.0;
     conf = kShapeOnly;
   }
   const double s_self = conf * expectedAffinity(P, A) + (1.0 - conf) * mean;

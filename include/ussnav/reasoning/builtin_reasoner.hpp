@@ -52,6 +52,7 @@ class BuiltinReasoner : public Reasoner {
  private:
   std::shared_ptr<const CommonsensePriors> priors_;
   double min_chance_ratio_;
+  int hallway_ = -1;  // the priors' "hallway" room type, -1 when they have none
 };
 
 // The decision rule above with any chance function s(region): max (s + 0.02) * best_utility,
