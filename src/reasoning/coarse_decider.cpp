@@ -59,7 +59,6 @@ int CoarseDecider::choose(const PlanInput& in, const std::vector<RegionCandidate
     if (auto it = semantics_.find(s.id); it != semantics_.end()) {
       r.label = it->second.label;
       r.description = it->second.description;
-      r.label_confidence = it->second.confidence;
     }
     if (auto c = candidate(s.id); c != candidates.end()) {
       r.frontiers = c->targets;

@@ -20,7 +20,6 @@ namespace ussnav {
 struct RegionState {
   int id = -1;
   std::string label, description;   // "" until labelled
-  double label_confidence = 0.0;
   std::vector<int> adjacent;
   std::vector<std::string> objects; // labels
   std::vector<std::string> beyond;  // labels of objects seen from it in space it does not reach
