@@ -196,6 +196,7 @@ CoarseDecision chooseByChance(const CoarseQuery& q, const std::function<double(c
     double v = (s + 0.02) * r.best_utility;
     if (!global || r.best_utility > global->best_utility) global = &r, global_s = s;
     if (r.id == stay) v *= kStay;
+    d.scores.push_back({r.id, s, v});
     if (v > best) best = v, d.region = r.id, best_s = s;
   }
   // Semantics too weak to act on: the global-utility choice.

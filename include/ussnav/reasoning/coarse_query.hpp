@@ -56,6 +56,13 @@ struct CoarseDecision {
   double latency_ms = 0.0;
   bool global_utility = false;      // chance-based reasoners: the semantics did not tell the
                                     // regions apart, so `region` is the global-utility choice
+  // Chance-based reasoners: every region weighed, for debugging (USSNAV_DEBUG_EPISODE prints them).
+  struct Score {
+    int region = -1;
+    double chance = 0.0;
+    double value = 0.0;  // what the choice maximised
+  };
+  std::vector<Score> scores;
 };
 
 nlohmann::json toJson(const CoarseQuery& q);
