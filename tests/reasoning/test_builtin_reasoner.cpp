@@ -148,6 +148,14 @@ TEST(BuiltinReasoner, ChanceDecidesOnlyWhenItStandsOut) {
   // Twice the chance: region 6 is worth (0.40 + 0.02) * 6 = 2.52 against (0.20 + 0.02) * 10 = 2.2.
   EXPECT_EQ(choose(0.20, 0.40, 1.5).region, 6);
   EXPECT_FALSE(choose(0.20, 0.40, 1.5).global_utility);
+  // The weighing is reported for every region with targets (region 4 has none).
+  const auto scores = choose(0.20, 0.40, 1.5).scores;
+  ASSERT_EQ(scores.size(), 2u);
+  EXPECT_EQ(scores[0].region, 5);
+  EXPECT_DOUBLE_EQ(scores[0].chance, 0.20);
+  EXPECT_NEAR(scores[0].value, 2.2, 1e-9);
+  EXPECT_EQ(scores[1].region, 6);
+  EXPECT_NEAR(scores[1].value, 2.52, 1e-9);
   // 1.5x the chance wins only with the commitment bonus (last choice 6: 0.32 * 6 * 1.2 = 2.30 >
   // 2.2), and 0.30 is under 1.5 x 0.20: too close to act on.
   q.last_choice = 6;
