@@ -218,6 +218,38 @@ std::shared_ptr<const CommonsensePriors> CommonsensePriors::load(const std::file
   return P;
 }
 
+int CommonsensePriors::roomNamedBy(const std::string& word) const {
+  // A room type's one-word name or alias ("office", "corridor"), else the first word of a
+  // two-word one ("dining" room, "conference" room, "laundry" room, "exercise" room).
+  const std::string w = lower(trim(word));
+  if (w.empty()) return -1;
+  int first_word = -1;
+  for (size_t i = 0; i < rooms_.size(); ++i) {
+    std::vector<std::string> names = rooms_[i].aliases;
+    names.push_back(rooms_[i].name);
+    for (const auto& n : names) {
+      const auto t = wordnet::labelTokens(n);
+      if (t.size() == 1 && t[0] == w) return int(i);
+      if (t.size() == 2 && t[0] == w && first_word < 0) first_word = int(i);
+    }
+  }
+  return first_word;
+}
+
+int CommonsensePriors::roomCue(const std::string& label) const {
+  // The words before the head noun of the label ("office chair", "kitchen counter") and of the
+  // nearest hypernym's first lemma ("microwave" -> "kitchen appliance", "filing cabinet" ->
+  // "office furniture", "bed" -> "bedroom furniture", "treadmill" -> "exercise device").
+  const auto check = [&](const std::vector<std::string>& tokens) {
+    for (size_t i = 0; i + 1 < tokens.size(); ++i)
+      if (const int r = roomNamedBy(tokens[i]); r >= 0) return r;
+    return -1;
+  };
+  if (const int r = check(wordnet::labelTokens(label)); r >= 0) return r;
+  const auto hyp = wordnet::hypernymsOf(label);
+  return hyp.empty() ? -1 : check(wordnet::labelTokens(hyp.front()));
+}
+
 int CommonsensePriors::roomIndex(const std::string& name) const {
   const std::string n = lower(trim(name));
   for (size_t i = 0; i < rooms_.size(); ++i) {
@@ -242,7 +274,7 @@ std::vector<double> CommonsensePriors::roomsGivenObject(const std::string& label
     if (auto it = cache_.find(key); it != cache_.end()) return it->second;
   }
   std::vector<double> sum(rooms_.size(), 0.0);
-  int n = 0;
+  int n = 0, cued = 0;
   // Exact category words (or aliases) first: the label's own, else the category Matterport3D's
   // annotators filed it under ("nightstand" -> chest of drawers), else those of a WordNet synonym
   // of it ("tv" -> "television", an alias of tv_monitor). A label that names a category is not
@@ -265,7 +297,32 @@ std::vector<double> CommonsensePriors::roomsGivenObject(const std::string& label
     for (const auto& syn : wordnet::synonymsOf(key)) synonyms.push_back(lower(syn));
     addNamed(synonyms);
   }
-  if (n == 0 && encoder_) {
+  // Rows of compounds the label is the modifier of are its accessories, which stand where it
+  // does: "tv" -> TVStand, "toilet" -> ToiletPaper, "shower" -> ShowerCurtain. (MP3D files a
+  // tv and an office's computer monitor alike under tv_monitor, whose row leans to offices.)
+  // The label's WordNet synonyms name the same thing: "television" -> "tv" -> TVStand.
+  if (n > 0) {
+    std::vector<std::vector<std::string>> names{wordnet::labelTokens(key)};
+    for (const auto& syn : wordnet::synonymsOf(key)) names.push_back(wordnet::labelTokens(syn));
+    for (const Row& r : rows_) {
+      const auto t = wordnet::labelTokens(r.category);
+      if (std::any_of(names.begin(), names.end(), [&](const std::vector<std::string>& k) {
+            return !k.empty() && t.size() == k.size() + 1 && std::equal(k.begin(), k.end(), t.begin());
+          })) {
+        for (size_t k = 0; k < sum.size(); ++k) sum[k] += r.p[k];
+        ++n;
+      }
+    }
+  }
+  // A room named in the label or in its nearest hypernym is the label's own word for where it
+  // stands ("office chair": a chair, and an office's): one more row, all on that room. It stands
+  // in for the loose text match when no category matched.
+  if (const int cue = roomCue(key); cue >= 0) {
+    sum[size_t(cue)] += 1.0;
+    ++n;
+    ++cued;
+  }
+  if (n == cued && encoder_) {
     // Every category within match_cosine; failing that, the nearest one(s) within
     // kNearCosine ("refrigerator" -> Fridge, "nightstand" -> side table), at half weight
     // (mixed with a uniform row) since the match is loose.
@@ -278,7 +335,7 @@ std::vector<double> CommonsensePriors::roomsGivenObject(const std::string& label
       best = std::max(best, cos[i]);
     }
     const bool loose = best < match_cosine_;
-    if (!loose || best >= kNearCosine)
+    if (!loose || (best >= kNearCosine && cued == 0))
       for (size_t i = 0; i < rows_.size(); ++i)
         if (cos[i] >= (loose ? best - 1e-9 : match_cosine_)) {
           for (size_t k = 0; k < sum.size(); ++k) sum[k] += loose ? 0.5 * rows_[i].p[k] + 0.5 / double(sum.size()) : rows_[i].p[k];

@@ -72,6 +72,46 @@ TEST(Priors, ALabelThatNamesACategoryIsNotWidenedByItsSynonyms) {
   EXPECT_EQ(P.roomsGivenObject("tv"), P.roomsGivenObject("television"));
 }
 
+TEST(Priors, ALabelsOwnWordsNameItsRoom) {
+  // A room named before the head noun, or in the nearest WordNet hypernym, is one more row on
+  // that room: none of the tables has an office chair or a filing cabinet.
+  const auto& P = *priors();
+  const int office = P.roomIndex("office"), kitchen = P.roomIndex("kitchen");
+  EXPECT_EQ(P.roomNamedBy("office"), office);
+  EXPECT_EQ(P.roomNamedBy("corridor"), P.roomIndex("hallway"));      // a one-word alias
+  EXPECT_EQ(P.roomNamedBy("conference"), P.roomIndex("meeting room"));  // "conference room"
+  EXPECT_EQ(P.roomNamedBy("dining"), P.roomIndex("dining room"));
+  EXPECT_EQ(P.roomNamedBy("chair"), -1);
+  EXPECT_EQ(P.roomNamedBy("room"), -1);
+  EXPECT_EQ(P.roomCue("office chair"), office);      // the label's own modifier
+  EXPECT_EQ(P.roomCue("kitchen counter"), kitchen);
+  EXPECT_EQ(P.roomCue("filing cabinet"), office);    // hypernym: office furniture
+  EXPECT_EQ(P.roomCue("microwave"), kitchen);        // hypernym: kitchen appliance
+  EXPECT_EQ(P.roomCue("chair"), -1);
+  EXPECT_EQ(P.roomCue("plant"), -1);                 // "living thing" is no nearest hypernym
+  EXPECT_EQ(P.roomCue("office"), -1);                // a room is not its own modifier
+  // A plain chair leans to living rooms (SG-Nav); an office chair to offices.
+  EXPECT_EQ(mostLikelyRoom("chair"), "living room");
+  EXPECT_EQ(mostLikelyRoom("office chair"), "office");
+  EXPECT_EQ(mostLikelyRoom("filing cabinet"), "office");
+  EXPECT_EQ(mostLikelyRoom("stove"), "kitchen");
+  EXPECT_EQ(mostLikelyRoom("bed"), "bedroom");  // bedroom furniture: agrees with its row
+}
+
+TEST(Priors, AnAccessoryStandsWhereItsObjectDoes) {
+  // MP3D files a tv and a computer monitor alike under tv_monitor, whose SG-Nav row leans to
+  // offices; ProcTHOR's TVStand (a compound whose modifier is "tv") says living room.
+  EXPECT_EQ(mostLikelyRoom("monitor"), "office");
+  EXPECT_EQ(mostLikelyRoom("tv"), "living room");
+  EXPECT_EQ(mostLikelyRoom("television"), "living room");  // through its synonym "tv"
+  const auto& P = *priors();
+  const auto tv = P.roomsGivenObject("tv"), monitor = P.roomsGivenObject("monitor");
+  const size_t living = size_t(P.roomIndex("living room"));
+  EXPECT_GT(tv[living], monitor[living] + 0.1);
+  // Only one word more: "table" is not TableTopDecor's, so a table stays a dining room's.
+  EXPECT_EQ(mostLikelyRoom("table"), "dining room");
+}
+
 TEST(Priors, RoomNamesAliasesAndAdjacency) {
   const auto& P = *priors();
   EXPECT_EQ(P.roomIndex("corridor"), P.roomIndex("hallway"));

@@ -17,9 +17,13 @@
 // aside: "armchair" is ArmChair), else through the MP3D raw-label table, else through a WordNet
 // synonym ("tv" -> tv_monitor by its alias television), else by the text encoder to every
 // category within match_cosine ("couch" -> Sofa), failing that to the nearest within cosine 0.6 at
-// half weight ("refrigerator" -> Fridge). Each matching row is normalised over the rooms its table
-// covers, and the rows are averaged. Rows that say nothing (all zero) are skipped. A label
-// matching no category has no prior (empty vector).
+// half weight ("refrigerator" -> Fridge). Two more kinds of row come from the words themselves:
+// a matched label's accessories, the compounds one word longer that it (or a WordNet synonym)
+// modifies ("tv" -> TVStand, "toilet" -> ToiletPaper), and a room the label or its nearest
+// WordNet hypernym names ("office chair", "microwave" = kitchen appliance, "filing cabinet" =
+// office furniture), a row all on that room, which stands in for the loose text match. Each
+// matching row is normalised over the rooms its table covers, and the rows are averaged. Rows
+// that say nothing (all zero) are skipped. A label matching nothing has no prior (empty vector).
 // Thread-safe for const use; roomsGivenObject() caches per label.
 
 #include <filesystem>
@@ -53,6 +57,13 @@ class CommonsensePriors {
   // Index of a room type by name or alias (case-insensitive, then by text cosine >= match_cosine);
   // -1 when none.
   int roomIndex(const std::string& name) const;
+  // The room type a word names: a one-word name or alias ("office", "corridor"), else the first
+  // word of a two-word one ("dining", "conference", "laundry"); -1 when none.
+  int roomNamedBy(const std::string& word) const;
+  // The room a label names in its own words or its nearest WordNet hypernym's: "office chair",
+  // "kitchen counter", "microwave" (a kitchen appliance), "filing cabinet" (office furniture);
+  // -1 when none.
+  int roomCue(const std::string& label) const;
   // P(room | an object with this label), size rooms(); empty when the label matches no category.
   std::vector<double> roomsGivenObject(const std::string& label) const;
   // Room adjacency prior in [0, 1] (listed pairs, else 0.1).
