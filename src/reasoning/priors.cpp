@@ -274,7 +274,7 @@ std::vector<double> CommonsensePriors::roomsGivenObject(const std::string& label
     if (auto it = cache_.find(key); it != cache_.end()) return it->second;
   }
   std::vector<double> sum(rooms_.size(), 0.0);
-  int n = 0, cued = 0;
+  int n = 0;
   // Exact category words (or aliases) first: the label's own, else the category Matterport3D's
   // annotators filed it under ("nightstand" -> chest of drawers), else those of a WordNet synonym
   // of it ("tv" -> "television", an alias of tv_monitor). A label that names a category is not
@@ -301,28 +301,29 @@ std::vector<double> CommonsensePriors::roomsGivenObject(const std::string& label
   // does: "tv" -> TVStand, "toilet" -> ToiletPaper, "shower" -> ShowerCurtain. (MP3D files a
   // tv and an office's computer monitor alike under tv_monitor, whose row leans to offices.)
   // The label's WordNet synonyms name the same thing: "television" -> "tv" -> TVStand.
-  if (n > 0) {
-    std::vector<std::vector<std::string>> names{wordnet::labelTokens(key)};
-    for (const auto& syn : wordnet::synonymsOf(key)) names.push_back(wordnet::labelTokens(syn));
-    for (const Row& r : rows_) {
-      const auto t = wordnet::labelTokens(r.category);
-      if (std::any_of(names.begin(), names.end(), [&](const std::vector<std::string>& k) {
-            return !k.empty() && t.size() == k.size() + 1 && std::equal(k.begin(), k.end(), t.begin());
+  const bool matched = n > 0;
+  if (matched) {
+    // Category words are space-separated tokens: an accessory is "<name> <one word>".
+    std::vector<std::string> names{categoryWords(key)};
+    for (const auto& syn : wordnet::synonymsOf(key)) names.push_back(categoryWords(syn));
+    for (const Row& r : rows_)
+      if (std::any_of(names.begin(), names.end(), [&](const std::string& w) {
+            return !w.empty() && r.category.size() > w.size() + 1 && r.category.compare(0, w.size() + 1, w + " ") == 0 &&
+                   r.category.find(' ', w.size() + 1) == std::string::npos;
           })) {
         for (size_t k = 0; k < sum.size(); ++k) sum[k] += r.p[k];
         ++n;
       }
-    }
   }
   // A room named in the label or in its nearest hypernym is the label's own word for where it
   // stands ("office chair": a chair, and an office's): one more row, all on that room. It stands
   // in for the loose text match when no category matched.
-  if (const int cue = roomCue(key); cue >= 0) {
+  const int cue = roomCue(key);
+  if (cue >= 0) {
     sum[size_t(cue)] += 1.0;
     ++n;
-    ++cued;
   }
-  if (n == cued && encoder_) {
+  if (!matched && encoder_) {
     // Every category within match_cosine; failing that, the nearest one(s) within
     // kNearCosine ("refrigerator" -> Fridge, "nightstand" -> side table), at half weight
     // (mixed with a uniform row) since the match is loose.
@@ -335,7 +336,7 @@ std::vector<double> CommonsensePriors::roomsGivenObject(const std::string& label
       best = std::max(best, cos[i]);
     }
     const bool loose = best < match_cosine_;
-    if (!loose || (best >= kNearCosine && cued == 0))
+    if (!loose || (best >= kNearCosine && cue < 0))
       for (size_t i = 0; i < rows_.size(); ++i)
         if (cos[i] >= (loose ? best - 1e-9 : match_cosine_)) {
           for (size_t k = 0; k < sum.size(); ++k) sum[k] += loose ? 0.5 * rows_[i].p[k] + 0.5 / double(sum.size()) : rows_[i].p[k];
