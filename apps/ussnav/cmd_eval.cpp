@@ -179,8 +179,8 @@ void addEvalCommand(CLI::App& root) {
   cmd->add_option("--suite", args.suite, "suite YAML (docs/eval.md)")->capture_default_str()->check(CLI::ExistingFile);
   cmd->add_option("--planners", args.planners, "comma-separated: frontier, tsp, full")->capture_default_str();
   cmd->add_option("--out", args.out, "output folder")->capture_default_str();
-  cmd->add_option("--reasoner", args.reasoner, "coarse level of `full`: builtin | llm | oracle (ground truth, an upper bound; default: reasoning.reasoner)")
-      ->check(CLI::IsMember({"builtin", "llm", "oracle"}));
+  cmd->add_option("--reasoner", args.reasoner, "coarse level of `full`: builtin | llm | oracle (ground truth, an upper bound) | oracle-labels (the true room types, the builtin rule); default: reasoning.reasoner")
+      ->check(CLI::IsMember({"builtin", "llm", "oracle", "oracle-labels"}));
   cmd->add_option("--jobs", args.jobs, "episodes run in parallel (default: min(2, cores))");
   cmd->add_flag("--fresh", args.fresh, "discard DIR/episodes.csv instead of resuming");
   cmd->add_flag("--save-episodes", args.save_episodes, "also write each episode's result, graph and pictures under DIR/episodes/");

@@ -81,8 +81,8 @@ void addExploreCommand(CLI::App& root) {
                   "what to find, in free text: \"bed\", \"somewhere to sleep\", \"the sofa in the living room\"")
       ->required();
   cmd->add_option("--planner", args.planner, "full | frontier | tsp")->capture_default_str();
-  cmd->add_option("--reasoner", args.reasoner, "coarse level of `full`: builtin | llm | oracle (ground truth, an upper bound; default: reasoning.reasoner)")
-      ->check(CLI::IsMember({"builtin", "llm", "oracle"}));
+  cmd->add_option("--reasoner", args.reasoner, "coarse level of `full`: builtin | llm | oracle (ground truth, an upper bound) | oracle-labels (the true room types, the builtin rule); default: reasoning.reasoner")
+      ->check(CLI::IsMember({"builtin", "llm", "oracle", "oracle-labels"}));
   cmd->add_option("--seed", args.seed, "seed for sensor noise and the detector")->capture_default_str();
   cmd->add_option("--max-time", args.max_time, "time budget in simulated seconds (default: episode.max_time_s)");
   cmd->add_option("--out", args.out, "output folder")->capture_default_str();

@@ -88,10 +88,11 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
   std::unique_ptr<CoarseDecider> decider;
   RegionChooser coarse = spec.coarse;
   if ((spec.planner == "full" && !coarse) || goal_room >= 0) {
-    if (cfg.reasoning.reasoner == "oracle") {
-      oracle = std::make_shared<OracleReasoner>(sim.world(), roomsOf(sim.world(), truth.instances),
-                                                std::make_shared<BuiltinReasoner>(priors),
-                                                cfg.reasoning.min_chance_ratio);
+    if (cfg.reasoning.reasoner == "oracle" || cfg.reasoning.reasoner == "oracle-labels") {
+      oracle = std::make_shared<OracleReasoner>(
+          sim.world(), roomsOf(sim.world(), truth.instances), std::make_shared<BuiltinReasoner>(priors),
+          cfg.reasoning.min_chance_ratio,
+          cfg.reasoning.reasoner == "oracle" ? OracleReasoner::Knows::GoalRooms : OracleReasoner::Knows::RoomTypes);
       reasoner = oracle;
     } else {
       reasoner = makeReasoner(cfg.reasoning, priors);

@@ -2,13 +2,20 @@
 
 #include "ussnav/eval/region_oracle.hpp"
 
+#include <algorithm>
+
 #include "ussnav/reasoning/builtin_reasoner.hpp"
+#include "ussnav/reasoning/priors.hpp"
 
 namespace ussnav {
 
-OracleReasoner::OracleReasoner(const World& world, std::set<int> goal_rooms, std::shared_ptr<Reasoner> labels,
-                               double min_chance_ratio)
-    : world_(world), goal_rooms_(std::move(goal_rooms)), labels_(std::move(labels)), min_chance_ratio_(min_chance_ratio) {
+OracleReasoner::OracleReasoner(const World& world, std::set<int> goal_rooms, std::shared_ptr<BuiltinReasoner> builtin,
+                               double min_chance_ratio, Knows knows)
+    : world_(world),
+      goal_rooms_(std::move(goal_rooms)),
+      builtin_(std::move(builtin)),
+      min_chance_ratio_(min_chance_ratio),
+      knows_(knows) {
   for (const Door& d : world_.doors) {
     if (goal_rooms_.count(d.room_a) && d.room_b >= 0) next_to_goal_.insert(d.room_b);
     if (goal_rooms_.count(d.room_b) && d.room_a >= 0) next_to_goal_.insert(d.room_a);
@@ -25,21 +32,35 @@ void OracleReasoner::setScene(const std::vector<RegionSummary>& regions) {
   room_of_region_ = std::move(rooms);
 }
 
+int OracleReasoner::roomOf(int region) const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  const auto it = room_of_region_.find(region);
+  return it == room_of_region_.end() ? -1 : it->second;
+}
+
 double OracleReasoner::chance(const RegionState& r) const {
-  int room = -1;
-  {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    const auto it = room_of_region_.find(r.id);
-    if (it != room_of_region_.end()) room = it->second;
-  }
+  const int room = roomOf(r.id);
   if (room < 0) return 0.5;
   const double self = goal_rooms_.count(room) ? 1.0 : kMiss;
   const double next = next_to_goal_.count(room) ? 1.0 : kMiss;
   return blendChance(r, self, next);
 }
 
+double OracleReasoner::chance(const CoarseQuery& q, const RegionState& r) const {
+  if (knows_ == Knows::GoalRooms) return chance(r);
+  const int room = roomOf(r.id);
+  const auto it = std::find_if(world_.rooms.begin(), world_.rooms.end(), [&](const Room& x) { return x.id == room; });
+  const int type = it == world_.rooms.end() ? -1 : builtin_->priors().roomIndex(it->type);
+  if (type < 0) return builtin_->targetChance(q, r);
+  BuiltinReasoner::RoomBelief truth;
+  truth.p.assign(builtin_->priors().rooms().size(), 0.0);
+  truth.p[size_t(type)] = 1.0;
+  truth.confidence = 1.0;
+  return builtin_->targetChance(q, r, truth);
+}
+
 CoarseDecision OracleReasoner::chooseRegion(const CoarseQuery& q) {
-  return chooseByChance(q, [&](const RegionState& r) { return chance(r); }, min_chance_ratio_);
+  return chooseByChance(q, [&](const RegionState& r) { return chance(q, r); }, min_chance_ratio_);
 }
 
 std::set<int> roomsOf(const World& world, const std::vector<const Object*>& objects) {

@@ -106,7 +106,27 @@ RegionSemantics BuiltinReasoner::labelRegion(const RegionSummary& region) {
   return s;
 }
 
+BuiltinReasoner::RoomBelief BuiltinReasoner::roomBelief(const RegionState& r) const {
+  // The chance weighs objects only; a corridor's shape counts when no object has a prior (a
+  // hallway at confidence kShapeOnly). Counting the shape next to objects names corridors
+  // better (docs/eval.md) but moved flights both ways and lost SPL on two suites.
+  RoomBelief b;
+  double known = 0.0;
+  b.p = roomDistribution(r.objects, &known);
+  b.confidence = 1.0 - std::exp(-known / 2.0);
+  if (known == 0.0 && r.corridor_shaped && hallway_ >= 0) {
+    std::fill(b.p.begin(), b.p.end(), 0.0);
+    b.p[size_t(hallway_)] = 1.0;
+    b.confidence = kShapeOnly;
+  }
+  return b;
+}
+
 double BuiltinReasoner::targetChance(const CoarseQuery& q, const RegionState& r) const {
+  return targetChance(q, r, roomBelief(r));
+}
+
+double BuiltinReasoner::targetChance(const CoarseQuery& q, const RegionState& r, const RoomBelief& belief) const {
   const size_t R = priors_->rooms().size();
   const TextEncoder& enc = priors_->encoder();
   if (namesTarget(enc, r.objects, q.instruction.targets)) return 1.0;
@@ -129,17 +149,9 @@ double BuiltinReasoner::targetChance(const CoarseQuery& q, const RegionState& r)
   if (!any && room < 0) return 0.5;  // nothing to tell the regions apart but a matching object
   double mean = 0.0;
   for (double& a : A) mean += (a /= amax) / double(R);
-  // The chance weighs objects only; a corridor's shape counts when no object has a prior (a
-  // hallway at confidence kShapeOnly). Counting the shape next to objects names corridors
-  // better (docs/eval.md) but moved flights both ways and lost SPL on two suites.
-  double known = 0.0;
-  auto P = roomDistribution(r.objects, &known);
-  double conf = 1.0 - std::exp(-known / 2.0);
-  if (known == 0.0 && r.corridor_shaped && hallway_ >= 0) {
-    std::fill(P.begin(), P.end(), 0.0);
-    P[size_t(hallway_)] = 1.0;
-    conf = kShapeOnly;
-  }
+  const std::vector<double>& P = belief.p;
+  const double conf = belief.confidence;
+  if (P.size() != R) return mean;
   const double s_self = conf * expectedAffinity(P, A) + (1.0 - conf) * mean;
   if (kBeyond <= 0.0 || r.gain <= 0.0 || r.frontier_gain <= 0.0) return s_self;
   // Frontiers look into unknown space: more of this room, or the room next door, whose type

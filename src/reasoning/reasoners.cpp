@@ -100,9 +100,9 @@ std::filesystem::path promptsDir(const ReasoningConfig& cfg) {
 std::shared_ptr<Reasoner> makeReasoner(const ReasoningConfig& cfg, std::shared_ptr<const CommonsensePriors> priors) {
   if (cfg.reasoner == "builtin") return std::make_shared<BuiltinReasoner>(std::move(priors), cfg.min_chance_ratio);
   if (cfg.reasoner == "llm") return std::make_shared<LlmReasoner>(cfg, std::move(priors));
-  if (cfg.reasoner == "oracle")
+  if (cfg.reasoner == "oracle" || cfg.reasoner == "oracle-labels")
     throw InputError("config", "reasoning.reasoner",
-                     "'oracle' reads the simulator's ground truth: only ussnav explore and eval can use it "
+                     "'" + cfg.reasoner + "' reads the simulator's ground truth: only ussnav explore and eval can use it "
                      "(expected builtin or llm here)");
   throw InputError("config", "reasoning.reasoner", "unknown reasoner '" + cfg.reasoner + "' (expected builtin or llm)");
 }

@@ -118,3 +118,37 @@ TEST(RegionOracle, LabelsComeFromTheBuiltinReasonerAndMakeReasonerRefusesTheOrac
   cfg.reasoner = "oracle";
   EXPECT_THROW(makeReasoner(cfg, priors()), InputError);
 }
+
+TEST(RegionOracle, OracleLabelsGiveTheBuiltinChanceOfEachRegionsTrueRoomType) {
+  World w = corridorOfRooms();
+  w.rooms[0].type = "kitchen", w.rooms[1].type = "corridor", w.rooms[2].type = "bedroom", w.rooms[3].type = "attic";
+  const auto builtin = std::make_shared<BuiltinReasoner>(priors());
+  OracleReasoner oracle(w, {3}, builtin, BuiltinReasoner::kMinChanceRatio, OracleReasoner::Knows::RoomTypes);
+  EXPECT_EQ(oracle.name(), "oracle-labels");
+  oracle.setScene({summary(1, 2, 2), summary(2, 6, 2), summary(3, 10, 2), summary(4, 2, 6), summary(5, 20, 2)});
+  CoarseQuery q;
+  q.instruction = interpretInstruction("bed", *priors());
+  // The bedroom, no frontiers: its own chance is the bed's affinity to a bedroom, the highest (1).
+  RegionState bedroom = state(3, 100, 0, 10);
+  EXPECT_DOUBLE_EQ(oracle.chance(q, bedroom), 1.0);
+  // Its objects do not matter: a fridge seen there would make the builtin reasoner read a kitchen.
+  bedroom.objects = {"fridge", "stove"};
+  EXPECT_DOUBLE_EQ(oracle.chance(q, bedroom), 1.0);
+  EXPECT_LT(builtin->targetChance(q, bedroom), 0.5);
+  // The kitchen: a bed's affinity there is small, below what no knowledge at all gives.
+  const RegionState kitchen = state(1, 100, 0, 10);
+  EXPECT_LT(oracle.chance(q, kitchen), 0.1);
+  EXPECT_LT(oracle.chance(q, kitchen), builtin->targetChance(q, kitchen));
+  // A corridor ("hallway" by its alias) with frontiers: its next room may be a bedroom.
+  EXPECT_GT(oracle.chance(q, state(2, 100, 100, 10)), oracle.chance(q, state(1, 100, 100, 10)));
+  // A type the priors cannot name, a region outside every room, one the scene lacks: the builtin.
+  for (int id : {4, 5, 9}) EXPECT_DOUBLE_EQ(oracle.chance(q, state(id, 100, 0, 10)), builtin->targetChance(q, state(id, 100, 0, 10)));
+  // The choice: the bedroom over the kitchen next to the UAV, which the builtin reasoner prefers.
+  q.current_region = 1;
+  q.regions = {state(1, 300, 0, 3), state(3, 100, 0, 10)};
+  EXPECT_NE(builtin->chooseRegion(q).region, 3);
+  EXPECT_EQ(oracle.chooseRegion(q).region, 3);
+  ReasoningConfig cfg;
+  cfg.reasoner = "oracle-labels";
+  EXPECT_THROW(makeReasoner(cfg, priors()), InputError);
+}

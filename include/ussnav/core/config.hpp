@@ -402,7 +402,7 @@ struct LlmConfig {
 
 // Coarse-level reasoning (paper Sec. V-B): region semantics and the region to search.
 struct ReasoningConfig {
-  std::string reasoner = "builtin";   // builtin (offline commonsense) | llm | oracle (evaluation only: ground truth)
+  std::string reasoner = "builtin";   // builtin (offline commonsense) | llm | oracle, oracle-labels (evaluation only: ground truth)
   std::string prompts_dir = "";       // "" = the repository's prompts/
   double label_min_interval_s = 2.0;  // a region is re-labelled at most this often (sim time), s
   int label_queue = 16;               // pending region-label requests; older ones are dropped
@@ -412,7 +412,7 @@ struct ReasoningConfig {
   double min_chance_ratio = 1.5;
   LlmConfig llm;
   template <class V> void visit(V& v) {
-    v.choice("reasoner", reasoner, {"builtin", "llm", "oracle"});
+    v.choice("reasoner", reasoner, {"builtin", "llm", "oracle", "oracle-labels"});
     v.text("prompts_dir", prompts_dir, "folder with the prompt files; empty = repository prompts/");
     v.field("label_min_interval_s", label_min_interval_s, 0.0, 1e4, "s");
     v.field("label_queue", label_queue, 1, 10000, "requests");

@@ -1,13 +1,18 @@
 #pragma once
-// The oracle reasoner (`--reasoner oracle`): an upper bound for the coarse level, evaluation
-// only — it reads the simulator's ground truth and is not a navigation method. It knows which
-// ground-truth rooms hold a goal instance; a region's room is the room under its centroid. Its
-// own chance is 1 when that room holds the goal, else kMiss; its frontiers' chance (they look
-// into the room next door) is 1 when a door joins that room to a goal room, else kMiss; a region
-// outside every room gets 0.5 for both. The decision rule is the builtin one (chooseByChance:
-// chance x best gain / cost, the committed region x 1.2), so `full` with this reasoner shows
-// what perfect room-level knowledge would buy the `full` planner. Region labels come from the
-// builtin reasoner (room labels play no part in the oracle's choice).
+// The oracle reasoners (`--reasoner oracle`, `--reasoner oracle-labels`): upper bounds for the
+// coarse level, evaluation only — they read the simulator's ground truth and are not navigation
+// methods. A region's room is the ground-truth room under its centroid.
+//  - `oracle` (Knows::GoalRooms) knows which rooms hold a goal instance. A region's own chance
+//    is 1 when its room holds the goal, else kMiss; its frontiers' chance (they look into the
+//    room next door) is 1 when a door joins that room to a goal room, else kMiss; a region
+//    outside every room gets 0.5 for both. It shows what perfect room-level knowledge would buy.
+//  - `oracle-labels` (Knows::RoomTypes) knows only every region's room type: the builtin
+//    chance with the region's true type at confidence 1 in place of what its objects say
+//    (BuiltinReasoner::RoomBelief); a region outside every room, or in a room whose type the
+//    priors cannot name, keeps the builtin belief. It shows what perfect region labels would buy
+//    the builtin reasoner, all else (priors, adjacency, rule) unchanged.
+// Both use the builtin decision rule (chooseByChance: chance x best gain / cost, the committed
+// region x 1.2). Region labels and descriptions come from the builtin reasoner.
 
 #include <map>
 #include <memory>
@@ -24,26 +29,32 @@ namespace ussnav {
 class OracleReasoner : public Reasoner {
  public:
   static constexpr double kMiss = 0.001;
+  enum class Knows { GoalRooms, RoomTypes };  // `oracle`, `oracle-labels`
 
-  // `goal_rooms`: ids of the world's rooms that hold a goal instance; `labels` names regions.
-  // `world` must outlive the reasoner (the episode's simulator holds it).
-  // `min_chance_ratio`: chooseByChance's (reasoning.min_chance_ratio).
-  OracleReasoner(const World& world, std::set<int> goal_rooms, std::shared_ptr<Reasoner> labels,
-                 double min_chance_ratio = BuiltinReasoner::kMinChanceRatio);
-  std::string name() const override { return "oracle"; }
-  RegionSemantics labelRegion(const RegionSummary& region) override { return labels_->labelRegion(region); }
+  // `goal_rooms`: ids of the world's rooms that hold a goal instance; `builtin` names regions
+  // (and gives the chance, with RoomTypes). `world` must outlive the reasoner (the episode's
+  // simulator holds it). `min_chance_ratio`: chooseByChance's (reasoning.min_chance_ratio).
+  OracleReasoner(const World& world, std::set<int> goal_rooms, std::shared_ptr<BuiltinReasoner> builtin,
+                 double min_chance_ratio = BuiltinReasoner::kMinChanceRatio, Knows knows = Knows::GoalRooms);
+  std::string name() const override { return knows_ == Knows::GoalRooms ? "oracle" : "oracle-labels"; }
+  RegionSemantics labelRegion(const RegionSummary& region) override { return builtin_->labelRegion(region); }
   CoarseDecision chooseRegion(const CoarseQuery& query) override;
 
   // The regions of the latest scene-graph snapshot (their centroids place them in rooms).
   void setScene(const std::vector<RegionSummary>& regions);
-  // The chance of one region (of the latest scene), as used by chooseRegion.
+  // The chance of one region (of the latest scene), as used by chooseRegion (the first form:
+  // GoalRooms only, which needs no query).
   double chance(const RegionState& r) const;
+  double chance(const CoarseQuery& q, const RegionState& r) const;
 
  private:
+  int roomOf(int region) const;  // the room id, -1 outside every room or unknown region
+
   const World& world_;
   std::set<int> goal_rooms_, next_to_goal_;
-  std::shared_ptr<Reasoner> labels_;
+  std::shared_ptr<BuiltinReasoner> builtin_;
   double min_chance_ratio_;
+  Knows knows_;
   mutable std::mutex mutex_;
   std::map<int, int> room_of_region_;  // region id -> room id, -1 outside every room
 };

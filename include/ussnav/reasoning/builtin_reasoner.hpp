@@ -46,8 +46,18 @@ class BuiltinReasoner : public Reasoner {
   // one more object that says "hallway"; `known` = the evidence: labels with a prior (+ 1 shape).
   std::vector<double> roomDistribution(const std::vector<std::string>& labels, double* known = nullptr,
                                        bool corridor_shaped = false) const;
-  // The chance s above for one region of the query.
+  // What a region's objects (or a corridor's shape) say about its room type: P(type) (size
+  // priors.rooms()) and the confidence conf in it (0: nothing known, s falls back to the mean).
+  struct RoomBelief {
+    std::vector<double> p;
+    double confidence = 0.0;
+  };
+  RoomBelief roomBelief(const RegionState& r) const;
+  // The chance s above for one region of the query; the second form takes the region's room
+  // belief from elsewhere (the evaluation's oracle-labels reasoner: its true type, conf 1).
   double targetChance(const CoarseQuery& q, const RegionState& r) const;
+  double targetChance(const CoarseQuery& q, const RegionState& r, const RoomBelief& belief) const;
+  const CommonsensePriors& priors() const { return *priors_; }
 
  private:
   std::shared_ptr<const CommonsensePriors> priors_;
