@@ -51,12 +51,12 @@ double OracleReasoner::chance(const CoarseQuery& q, const RegionState& r) const 
   const int room = roomOf(r.id);
   const auto it = std::find_if(world_.rooms.begin(), world_.rooms.end(), [&](const Room& x) { return x.id == room; });
   const int type = it == world_.rooms.end() ? -1 : builtin_->priors().roomIndex(it->type);
-  if (type < 0) return builtin_->targetChance(q, r);
-  BuiltinReasoner::RoomBelief truth;
-  truth.p.assign(builtin_->priors().rooms().size(), 0.0);
-  truth.p[size_t(type)] = 1.0;
-  truth.confidence = 1.0;
-  return builtin_->targetChance(q, r, truth);
+  BuiltinReasoner::RoomBelief belief = builtin_->roomBelief(r);
+  if (type >= 0 && belief.confidence > 0.0) {
+    std::fill(belief.p.begin(), belief.p.end(), 0.0);
+    belief.p[size_t(type)] = 1.0;
+  }
+  return builtin_->targetChance(q, r, belief);
 }
 
 CoarseDecision OracleReasoner::chooseRegion(const CoarseQuery& q) {

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "support/test_priors.hpp"
 
 #include "ussnav/core/error.hpp"
@@ -119,7 +121,7 @@ TEST(RegionOracle, LabelsComeFromTheBuiltinReasonerAndMakeReasonerRefusesTheOrac
   EXPECT_THROW(makeReasoner(cfg, priors()), InputError);
 }
 
-TEST(RegionOracle, OracleLabelsGiveTheBuiltinChanceOfEachRegionsTrueRoomType) {
+TEST(RegionOracle, OracleLabelsNameEachRegionsTrueRoomTypeAsSurelyAsItsEvidence) {
   World w = corridorOfRooms();
   w.rooms[0].type = "kitchen", w.rooms[1].type = "corridor", w.rooms[2].type = "bedroom", w.rooms[3].type = "attic";
   const auto builtin = std::make_shared<BuiltinReasoner>(priors());
@@ -128,25 +130,45 @@ TEST(RegionOracle, OracleLabelsGiveTheBuiltinChanceOfEachRegionsTrueRoomType) {
   oracle.setScene({summary(1, 2, 2), summary(2, 6, 2), summary(3, 10, 2), summary(4, 2, 6), summary(5, 20, 2)});
   CoarseQuery q;
   q.instruction = interpretInstruction("bed", *priors());
-  // The bedroom, no frontiers: its own chance is the bed's affinity to a bedroom, the highest (1).
+  // No evidence (no objects with a prior, no corridor shape): unknown, as for the builtin
+  // reasoner, whose chance is then the mean affinity m over room types.
+  const double m = builtin->targetChance(q, state(3, 100, 0, 10));
+  EXPECT_DOUBLE_EQ(oracle.chance(q, state(3, 100, 0, 10)), m);
+  // The bedroom with two objects that say "kitchen" (confidence 1 - e^-1): the bed's affinity to
+  // a bedroom is the highest (1), so s = (1 - e^-1) * 1 + e^-1 * m; the builtin reads a kitchen.
   RegionState bedroom = state(3, 100, 0, 10);
-  EXPECT_DOUBLE_EQ(oracle.chance(q, bedroom), 1.0);
-  // Its objects do not matter: a fridge seen there would make the builtin reasoner read a kitchen.
   bedroom.objects = {"fridge", "stove"};
-  EXPECT_DOUBLE_EQ(oracle.chance(q, bedroom), 1.0);
-  EXPECT_LT(builtin->targetChance(q, bedroom), 0.5);
-  // The kitchen: a bed's affinity there is small, below what no knowledge at all gives.
-  const RegionState kitchen = state(1, 100, 0, 10);
-  EXPECT_LT(oracle.chance(q, kitchen), 0.1);
-  EXPECT_LT(oracle.chance(q, kitchen), builtin->targetChance(q, kitchen));
-  // A corridor ("hallway" by its alias) with frontiers: its next room may be a bedroom.
-  EXPECT_GT(oracle.chance(q, state(2, 100, 100, 10)), oracle.chance(q, state(1, 100, 100, 10)));
+  EXPECT_NEAR(oracle.chance(q, bedroom), (1.0 - std::exp(-1.0)) + std::exp(-1.0) * m, 1e-12);
+  EXPECT_LT(builtin->targetChance(q, bedroom), m);
+  // The kitchen with a nightstand and a wardrobe: the builtin reads a bedroom, the oracle knows.
+  RegionState kitchen = state(1, 100, 0, 10);
+  kitchen.objects = {"nightstand", "wardrobe"};
+  EXPECT_GT(builtin->targetChance(q, kitchen), 2.0 * m);
+  EXPECT_LT(oracle.chance(q, kitchen), m);
+  // A corridor known by its shape alone: a hallway at confidence 0.3 either way. With a bathtub
+  // seen in it the builtin reads a bathroom; the oracle still a hallway, now at the confidence of
+  // one object, 1 - e^-0.5. The chance is linear in the confidence: s = m + conf (s_1 - m).
+  RegionState corridor = state(2, 100, 100, 10);
+  corridor.corridor_shaped = true;
+  const double s_shape = oracle.chance(q, corridor);
+  EXPECT_DOUBLE_EQ(s_shape, builtin->targetChance(q, corridor));
+  EXPECT_NE(s_shape, m);
+  corridor.objects = {"bathtub"};
+  EXPECT_NEAR(oracle.chance(q, corridor) - m, (1.0 - std::exp(-0.5)) / 0.3 * (s_shape - m), 1e-12);
+  EXPECT_NE(oracle.chance(q, corridor), builtin->targetChance(q, corridor));
   // A type the priors cannot name, a region outside every room, one the scene lacks: the builtin.
-  for (int id : {4, 5, 9}) EXPECT_DOUBLE_EQ(oracle.chance(q, state(id, 100, 0, 10)), builtin->targetChance(q, state(id, 100, 0, 10)));
+  for (int id : {4, 5, 9}) {
+    RegionState r = state(id, 100, 0, 10);
+    r.objects = {"fridge"};
+    EXPECT_DOUBLE_EQ(oracle.chance(q, r), builtin->targetChance(q, r));
+  }
   // The choice: the bedroom over the kitchen next to the UAV, which the builtin reasoner prefers.
   q.current_region = 1;
-  q.regions = {state(1, 300, 0, 3), state(3, 100, 0, 10)};
-  EXPECT_NE(builtin->chooseRegion(q).region, 3);
+  RegionState near = state(1, 300, 0, 3), far = state(3, 100, 0, 5);
+  near.objects = {"nightstand", "wardrobe"};
+  far.objects = {"fridge", "stove"};
+  q.regions = {near, far};
+  EXPECT_EQ(builtin->chooseRegion(q).region, 1);
   EXPECT_EQ(oracle.chooseRegion(q).region, 3);
   ReasoningConfig cfg;
   cfg.reasoner = "oracle-labels";

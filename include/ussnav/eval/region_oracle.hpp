@@ -6,11 +6,13 @@
 //    is 1 when its room holds the goal, else kMiss; its frontiers' chance (they look into the
 //    room next door) is 1 when a door joins that room to a goal room, else kMiss; a region
 //    outside every room gets 0.5 for both. It shows what perfect room-level knowledge would buy.
-//  - `oracle-labels` (Knows::RoomTypes) knows only every region's room type: the builtin
-//    chance with the region's true type at confidence 1 in place of what its objects say
-//    (BuiltinReasoner::RoomBelief); a region outside every room, or in a room whose type the
-//    priors cannot name, keeps the builtin belief. It shows what perfect region labels would buy
-//    the builtin reasoner, all else (priors, adjacency, rule) unchanged.
+//  - `oracle-labels` (Knows::RoomTypes) is a perfect region labeller: the builtin chance with
+//    the room-type distribution of the builtin belief (BuiltinReasoner::RoomBelief) replaced by
+//    the region's true type, at the builtin's confidence (as sure as its evidence: objects with
+//    a prior, a corridor's shape; a region with none stays unknown). A region outside every
+//    room, or in a room whose type the priors cannot name, keeps the builtin belief. It shows
+//    what right region labels would buy the builtin reasoner, all else (the evidence, priors,
+//    adjacency, rule) unchanged.
 // Both use the builtin decision rule (chooseByChance: chance x best gain / cost, the committed
 // region x 1.2). Region labels and descriptions come from the builtin reasoner.
 
