@@ -20,6 +20,9 @@ OracleReasoner::OracleReasoner(const World& world, std::set<int> goal_rooms, std
     if (goal_rooms_.count(d.room_a) && d.room_b >= 0) next_to_goal_.insert(d.room_b);
     if (goal_rooms_.count(d.room_b) && d.room_a >= 0) next_to_goal_.insert(d.room_a);
   }
+  // Room types are named once (roomIndex may fall back to the text encoder).
+  if (knows_ == Knows::RoomTypes)
+    for (const Room& room : world_.rooms) type_of_room_[room.id] = builtin_->priors().roomIndex(room.type);
 }
 
 void OracleReasoner::setScene(const std::vector<RegionSummary>& regions) {
@@ -48,9 +51,8 @@ double OracleReasoner::chance(const RegionState& r) const {
 
 double OracleReasoner::chance(const CoarseQuery& q, const RegionState& r) const {
   if (knows_ == Knows::GoalRooms) return chance(r);
-  const int room = roomOf(r.id);
-  const auto it = std::find_if(world_.rooms.begin(), world_.rooms.end(), [&](const Room& x) { return x.id == room; });
-  const int type = it == world_.rooms.end() ? -1 : builtin_->priors().roomIndex(it->type);
+  const auto it = type_of_room_.find(roomOf(r.id));
+  const int type = it == type_of_room_.end() ? -1 : it->second;
   BuiltinReasoner::RoomBelief belief = builtin_->roomBelief(r);
   if (type >= 0 && belief.confidence > 0.0) {
     std::fill(belief.p.begin(), belief.p.end(), 0.0);

@@ -59,6 +59,7 @@ class OracleReasoner : public Reasoner {
   Knows knows_;
   mutable std::mutex mutex_;
   std::map<int, int> room_of_region_;  // region id -> room id, -1 outside every room
+  std::map<int, int> type_of_room_;    // RoomTypes: room id -> priors room index, -1 unnamed
 };
 
 // Ids of the rooms holding the given objects (their room_id, else the room under their centre).

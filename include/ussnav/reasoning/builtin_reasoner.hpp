@@ -54,7 +54,7 @@ class BuiltinReasoner : public Reasoner {
   };
   RoomBelief roomBelief(const RegionState& r) const;
   // The chance s above for one region of the query; the second form takes the region's room
-  // belief from elsewhere (the evaluation's oracle-labels reasoner: its true type, conf 1).
+  // belief from elsewhere (the evaluation's oracle-labels reasoner: its true type at this belief's confidence).
   double targetChance(const CoarseQuery& q, const RegionState& r) const;
   double targetChance(const CoarseQuery& q, const RegionState& r, const RoomBelief& belief) const;
   const CommonsensePriors& priors() const { return *priors_; }
