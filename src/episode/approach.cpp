@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace ussnav {
@@ -11,22 +12,32 @@ double distanceToBox(const Aabb& box, const Vec3& p) {
   return d.norm();
 }
 
-namespace {
-
-// The line of sight from p towards the box centre c stops at the box: nothing blocks it, or the
-// first blocking voxel meets the box (grown by kTouch for rounding). A wall the object stands
-// against lies within a voxel of the box but not in it; stopping there is no view of the object.
-bool seesBox(const OccupancyMap& map, const Vec3& p, const Vec3& c, const Aabb& box) {
+// The first blocking voxel meets the box when it overlaps the box grown by kTouch (rounding).
+bool seesBox(const OccupancyMap& map, const Vec3& p, const Vec3& c, const Aabb& box, bool unknown_blocks) {
   constexpr double kTouch = 0.01;
-  const RayHit hit = castRay(map, p, c, false);
+  const RayHit hit = castRay(map, p, c, unknown_blocks);
   if (!hit.blocked) return true;
+  if (hit.hit_state != VoxelState::Occupied) return false;  // the object's surface is what was seen of it
   const Vec3 inside = hit.point + (c - p).normalized() * (1e-3 * map.resolution());
   const Vec3 lo = map.keyOf(inside).cast<double>() * map.resolution();  // the blocking voxel's corner
   const Vec3 hi = lo + Vec3::Constant(map.resolution());
   return (lo.array() <= box.max.array() + kTouch).all() && (hi.array() >= box.min.array() - kTouch).all();
 }
 
-}  // namespace
+int transitNode(const ConnectivityGraph& graph, const OccupancyMap& map, const Aabb& box, const Vec3& centroid,
+                double flight_z, double radius) {
+  if (graph.size() == 0) return -1;
+  const Vec3 c = box.center();
+  int best = -1;
+  double best_d = std::numeric_limits<double>::infinity();
+  for (const int n : graph.nodesWithin(centroid, radius)) {
+    const Vec3 at(graph.node(n).center.x(), graph.node(n).center.y(), flight_z);
+    const double d = (at - centroid).norm();
+    if (d < best_d && seesBox(map, at, c, box, true)) best = n, best_d = d;
+  }
+  if (best >= 0) return best;
+  return graph.nearestNode(centroid);
+}
 
 std::vector<ApproachPose> approachPoses(const OccupancyMap& map, const GraphDistances& from_uav, const Aabb& box,
                                         double flight_z, const Config& cfg, int max_poses) {
@@ -55,7 +66,7 @@ std::vector<ApproachPose> approachPoses(const OccupancyMap& map, const GraphDist
         const double horiz = to.head<2>().norm();
         const double zt = std::clamp(p.z(), box.min.z(), box.max.z());
         if (std::atan2(std::abs(p.z() - zt), std::max(horiz, 0.05)) > half_v) continue;  // the box centre in view
-        if (!seesBox(map, p, c, box)) continue;
+        if (!seesBox(map, p, c, box, true)) continue;
         const double cost = from_uav.toPoint(p);
         if (!std::isfinite(cost)) continue;
         out.push_back(ApproachPose{p, std::atan2(to.y(), to.x()), cost});

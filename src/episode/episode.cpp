@@ -173,8 +173,9 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
   std::map<int, double> failed_objects;  // object id -> retry time
   std::map<int, int> object_failures;     // object id -> failed approaches (kMaxObjectTries: dropped)
   std::map<int, int> object_transits;     // object id -> transit flights towards it
+  std::map<int, int> transit_replans;     // object id -> transits planned again after a blocked path
   std::map<int, int> far_failures;       // object id -> no approach pose while farther than transit_radius
-  constexpr int kMaxObjectTries = 3, kMaxTransits = 2, kMaxFarTries = 10;
+  constexpr int kMaxObjectTries = 3, kMaxTransits = 2, kMaxFarTries = 10, kMaxTransitReplans = 5;
   constexpr int kLookFrames = 5;  // frames at an approach pose for the detector to see a goal object
   int look_frames = 0;
   bool approaching = false;
@@ -354,7 +355,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
         if (!ok && object_transits[best->id] < kMaxTransits) {
           // No pose the map can vouch for yet (the object was seen from afar, beyond the window or
           // through a door): fly to the graph node nearest to it, from where the window covers it.
-          const int n = graph.nearestNode(best->centroid);
+          const int n = transitNode(graph, grid, best->box, best->centroid, flight_z, ep.transit_radius);
           const Vec3 via = n >= 0 ? Vec3(graph.node(n).center.x(), graph.node(n).center.y(), flight_z) : Vec3::Zero();
           if (n >= 0 && (via - best->centroid).norm() <= ep.transit_radius &&
               (via - uav.pose().position).norm() > ep.goal_tolerance) {
@@ -595,7 +596,12 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
         uav.clearYawTarget();
       const InflatedMap inflated(grid, std::min(cfg.sim.uav.radius + 0.1, path_clearance));
       if (!uav.pathDone() && pathBlocked(inflated, uav.remainingPath(), 4.0)) {
-        approaching = transit = false;  // the map now shows an obstacle on the way: choose again
+        // The map now shows an obstacle on the way: choose again. A transit cut short this way
+        // is no try of the object: it is planned again from here (house_6 "toilet": the transits
+        // to the bathroom were blocked at the same door each time and the toilet never reached).
+        if (transit && ++transit_replans[approach_object] <= kMaxTransitReplans)
+          object_transits[approach_object] = std::max(0, object_transits[approach_object] - 1);
+        approaching = transit = false;
         uav.setPath({});
       } else if (uav.pathDone() && (uav.pose().position - approach.position).norm() > ep.goal_tolerance) {
         approaching = transit = false;  // dropped (collision): re-plan

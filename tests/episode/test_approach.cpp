@@ -40,6 +40,38 @@ void expectContract(const std::vector<ApproachPose>& poses, const OccupancyMap& 
   }
 }
 
+// The fridge scene of the tests below: two 6 x 4 m rooms split by a wall (y = 3.94..4.06) with a
+// door at x = 1..2, a fridge-sized box flush against the wall's far side (3.5 cm gap, as a
+// furnished kitchen has it), both rooms mapped by spinning at seven points.
+const Aabb kFridge(Vec3(4.0, 4.095, 0.0), Vec3(4.65, 4.805, 1.84));
+
+test::SceneFlight fridgeBehindAWall() {
+  test::BoxScene scene = test::boxRoom(Vec3(0, 0, 0), Vec3(6, 8, 2.8), 0.2, false);
+  scene.solids.push_back(Aabb(Vec3(0, 3.94, 0), Vec3(1, 4.06, 2.8)));
+  scene.solids.push_back(Aabb(Vec3(2, 3.94, 0), Vec3(6, 4.06, 2.8)));
+  scene.solids.push_back(Aabb(Vec3(1, 3.94, 2.1), Vec3(2, 4.06, 2.8)));
+  scene.solids.push_back(kFridge);
+  test::SceneFlight flight(Vec3(1.5, 2, kFlightZ));
+  for (const Vec3& p : {Vec3(1.5, 2, kFlightZ), Vec3(3, 2, kFlightZ), Vec3(4.5, 2, kFlightZ), Vec3(1.5, 4, kFlightZ),
+                        Vec3(1.5, 6, kFlightZ), Vec3(3, 6, kFlightZ), Vec3(4.5, 6, kFlightZ)})
+    for (int k = 0; k < 16; ++k) flight.frame(scene, p, k * kPi / 8.0);
+  return flight;
+}
+
+// A map with the voxels in `unseen` turned Unknown: what the sensors have not looked at (the
+// foot of a wall in the LiDAR's blind cone, seen only from the other room).
+struct MapWithUnseen : OccupancyMap {
+  const OccupancyMap& map;
+  Aabb unseen;
+  MapWithUnseen(const OccupancyMap& m, const Aabb& u) : map(m), unseen(u) {}
+  double resolution() const override { return map.resolution(); }
+  VoxelState state(const Vec3i& key) const override {
+    return unseen.contains(centerOf(key)) ? VoxelState::Unknown : map.state(key);
+  }
+  bool inWindow(const Vec3i& key) const override { return map.inWindow(key); }
+  Aabb window() const override { return map.window(); }
+};
+
 }  // namespace
 
 TEST(Approach, HighOnAWallOnlyFromAboveFlightHeight) {
@@ -79,25 +111,54 @@ TEST(Approach, HighOnAWallOnlyFromAboveFlightHeight) {
 }
 
 TEST(Approach, NeverThroughTheWallAnObjectStandsAgainst) {
-  // Two 6 x 4 m rooms split by a wall (y = 3.94..4.06) with a door at x = 1..2. A fridge-sized
-  // box stands flush against the wall's far side (3.5 cm gap, as a furnished kitchen has it).
-  // From the near room the wall lies within a voxel of the box: the line of sight stops there,
+  // From the near room the wall lies within a voxel of the fridge: the line of sight stops there,
   // which is no view of the box. Every pose must be in the fridge's own room.
-  test::BoxScene scene = test::boxRoom(Vec3(0, 0, 0), Vec3(6, 8, 2.8), 0.2, false);
-  scene.solids.push_back(Aabb(Vec3(0, 3.94, 0), Vec3(1, 4.06, 2.8)));
-  scene.solids.push_back(Aabb(Vec3(2, 3.94, 0), Vec3(6, 4.06, 2.8)));
-  scene.solids.push_back(Aabb(Vec3(1, 3.94, 2.1), Vec3(2, 4.06, 2.8)));
-  const Aabb fridge(Vec3(4.0, 4.095, 0.0), Vec3(4.65, 4.805, 1.84));
-  scene.solids.push_back(fridge);
-  test::SceneFlight flight(Vec3(1.5, 2, kFlightZ));
-  for (const Vec3& p : {Vec3(1.5, 2, kFlightZ), Vec3(3, 2, kFlightZ), Vec3(4.5, 2, kFlightZ), Vec3(1.5, 4, kFlightZ),
-                        Vec3(1.5, 6, kFlightZ), Vec3(3, 6, kFlightZ), Vec3(4.5, 6, kFlightZ)})
-    for (int k = 0; k < 16; ++k) flight.frame(scene, p, k * kPi / 8.0);
+  const test::SceneFlight flight = fridgeBehindAWall();
   const Config cfg = defaultConfig();
   const GraphDistances gd(flight.graph, flight.grid, Vec3(4.3, 2, kFlightZ));  // the UAV just behind the wall
 
-  const std::vector<ApproachPose> poses = approachPoses(flight.grid, gd, fridge, kFlightZ, cfg, 100);
+  const std::vector<ApproachPose> poses = approachPoses(flight.grid, gd, kFridge, kFlightZ, cfg, 100);
   ASSERT_FALSE(poses.empty());
-  expectContract(poses, flight.grid, fridge, cfg);
+  expectContract(poses, flight.grid, kFridge, cfg);
   for (const ApproachPose& p : poses) EXPECT_GT(p.position.y(), 4.06) << p.position.transpose();
+}
+
+TEST(Approach, NorThroughTheUnseenFootOfThatWall) {
+  // The near face of the wall behind the fridge never seen below 1.6 m (house_6 "toilet": the
+  // UAV "reached" a pose in the next room and saw a wall). A line of sight through it would meet
+  // the wall's far half, which touches the fridge; unknown space is no view either.
+  const test::SceneFlight flight = fridgeBehindAWall();
+  const MapWithUnseen map(flight.grid, Aabb(Vec3(3.0, 3.9, 0.0), Vec3(5.6, 4.0, 1.6)));
+  const Config cfg = defaultConfig();
+  const GraphDistances gd(flight.graph, flight.grid, Vec3(4.3, 2, kFlightZ));
+  // The scene makes the case: through unknown space the near room would see the fridge.
+  const Vec3 near_room(4.3, 3.3, 0.6);
+  ASSERT_TRUE(isSafe(map, near_room, cfg.episode.clearance, true));
+  ASSERT_TRUE(seesBox(map, near_room, kFridge.center(), kFridge, false));
+  EXPECT_FALSE(seesBox(map, near_room, kFridge.center(), kFridge, true));
+  EXPECT_FALSE(seesBox(flight.grid, near_room, kFridge.center(), kFridge, true));  // the wall seen: blocked either way
+
+  const std::vector<ApproachPose> poses = approachPoses(map, gd, kFridge, kFlightZ, cfg, 100);
+  ASSERT_FALSE(poses.empty());
+  expectContract(poses, map, kFridge, cfg);
+  for (const ApproachPose& p : poses) EXPECT_GT(p.position.y(), 4.06) << p.position.transpose();
+}
+
+TEST(Approach, TransitToANodeThatSeesTheObject) {
+  // The fridge seen from its front face only: its centroid lies near the wall, and the graph
+  // node nearest to it is in the other room. The transit goes to a node in the fridge's room.
+  const test::SceneFlight flight = fridgeBehindAWall();
+  const Vec3 centroid(4.325, 4.2, 0.9);
+  const int nearest = flight.graph.nearestNode(centroid);
+  ASSERT_GE(nearest, 0);
+  ASSERT_LT(flight.graph.node(nearest).center.y(), 3.94) << "the scene no longer makes the case";
+  for (const double radius : {3.0, 1.5}) {
+    const int n = transitNode(flight.graph, flight.grid, kFridge, centroid, kFlightZ, radius);
+    ASSERT_GE(n, 0);
+    EXPECT_GT(flight.graph.node(n).center.y(), 4.06) << flight.graph.node(n).center.transpose();
+    EXPECT_LE((flight.graph.node(n).center - centroid).head<2>().norm(), radius + 1.0);
+  }
+  // Nothing within the radius sees it: the nearest node, as before.
+  EXPECT_EQ(transitNode(flight.graph, flight.grid, kFridge, centroid, kFlightZ, 0.01), nearest);
+  EXPECT_EQ(transitNode(ConnectivityGraph{}, flight.grid, kFridge, centroid, kFlightZ, 3.0), -1);
 }

@@ -7,8 +7,9 @@
 // obstacles and unknown space by episode.clearance in the map (UAV radius + 0.1 m when no pose
 // keeps that), the box centre is inside
 // the camera's field of view facing it (5 degrees inside the vertical half-angle), and the
-// line of sight towards the box centre is not cut before reaching the box (the first occupied
-// voxel on it, if any, meets the box: a wall the object stands against does not).
+// line of sight towards the box centre crosses only space seen free up to the box (seesBox: the
+// first voxel not seen free, if any, is an occupied one meeting the box; a wall the object stands
+// against is not, nor the unseen foot of that wall on its far side).
 // Ranked by graph distance from the UAV. Pure function of the map and graph.
 
 #include <vector>
@@ -16,6 +17,7 @@
 #include "ussnav/core/config.hpp"
 #include "ussnav/exploration/graph_costs.hpp"
 #include "ussnav/mapping/occupancy.hpp"
+#include "ussnav/skeleton/connectivity_graph.hpp"
 
 namespace ussnav {
 
@@ -30,6 +32,20 @@ inline constexpr double kApproachAbove = 0.3;
 
 // Distance from p to an axis-aligned box (0 inside).
 double distanceToBox(const Aabb& box, const Vec3& p);
+
+// Whether the line of sight from p towards the box centre reaches the box: nothing blocks it, or
+// the first blocking voxel is an occupied one that meets the box (the object's surface, as the
+// sensors saw it). Unknown voxels block when `unknown_blocks`: an unseen voxel next to the box may
+// be the foot of the wall it stands against, seen from the wrong side.
+bool seesBox(const OccupancyMap& map, const Vec3& p, const Vec3& box_center, const Aabb& box, bool unknown_blocks);
+
+// Where to fly for a closer look at an object no approach pose is found for yet (seen from afar,
+// through a door): the graph node within `radius` of `centroid` nearest to it whose centre, at
+// flight height, sees the box through space seen free (seesBox); else, the map around the object
+// being what is missing, the node nearest to `centroid`. The nearest node may be on the other
+// side of the wall the object stands against, no place to look from. -1 on an empty graph.
+int transitNode(const ConnectivityGraph& graph, const OccupancyMap& map, const Aabb& box, const Vec3& centroid,
+                double flight_z, double radius);
 
 // Up to `max_poses` poses, cheapest first; empty when none qualifies.
 std::vector<ApproachPose> approachPoses(const OccupancyMap& map, const GraphDistances& from_uav, const Aabb& box,
