@@ -13,7 +13,14 @@ namespace ussnav::detail {
 
 // Amanatides-Woo walk from `from` to `to` in voxels of size `res`. The walk takes exactly
 // |end - start| steps per axis, so it always ends in the voxel of `to` whatever the rounding.
-// `state(key)` returns the VoxelState of a key. The start voxel is not tested.
+// `state(key)` returns the VoxelState of a key. The start voxel is not tested. Where the segment
+// passes exactly through a voxel edge or corner (two axes' boundaries at the same point, as
+// between voxel centres at slopes like 1:5), the voxels on both sides of it are tested: a walk
+// stepping one axis first would slip between two blocking voxels that touch only diagonally, and
+// which of the two it steps first depends on the start point's rounding (a flight path judged
+// free from one point of a line and blocked from the next held a UAV in place for 270 s).
+inline constexpr double kCornerEps = 1e-9;  // segment parameter: boundaries this close are crossed at once
+
 template <class StateFn>
 RayHit walkSegment(double res, const Vec3& from, const Vec3& to, bool unknown_blocks,
                    StateFn&& state) {
@@ -44,6 +51,19 @@ RayHit walkSegment(double res, const Vec3& from, const Vec3& to, bool unknown_bl
   for (int s = 0; s < total; ++s) {
     const int axis = t_max[0] < t_max[1] ? (t_max[0] < t_max[2] ? 0 : 2) : (t_max[1] < t_max[2] ? 1 : 2);
     const double t = std::min(t_max[axis], 1.0);
+    for (int b = 0; b < 3; ++b) {  // an edge or corner crossed: the side voxels too
+      if (b == axis || remaining[b] == 0 || std::abs(t_max[b] - t_max[axis]) > kCornerEps) continue;
+      Vec3i side = key;
+      side[b] += step[b];
+      const VoxelState st = state(side);
+      if (st == VoxelState::Occupied || (unknown_blocks && st == VoxelState::Unknown)) {
+        hit.blocked = true;
+        hit.hit_state = st;
+        hit.distance = t * len;
+        hit.point = from + d * t;
+        return hit;
+      }
+    }
     key[axis] += step[axis];
     t_max[axis] = --remaining[axis] == 0 ? inf : t_max[axis] + t_delta[axis];
     const VoxelState st = state(key);
