@@ -185,6 +185,8 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
   ApproachPose approach;
   double last_check = -1e9;
   int spins_left = -1;  // -1: not spinning; else yaw steps left before giving up
+  // episode.look_around: turns at take-off still to command, and one more step to finish the last.
+  int look_steps = ep.look_around ? 4 : 0;
   const char* slice_at = std::getenv("USSNAV_DEBUG_SLICE");  // print the band once, at this time
   double t = 0.0;
   auto failObject = [&](int id) {
@@ -394,8 +396,18 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
       }
     }
 
+    // Look around at take-off: three 120-degree turns on the spot, the goal approached as soon as
+    // it is seen (1. above), then the first plan.
+    if (!end && !approaching && look_steps > 0 && uav.idle()) {
+      if (--look_steps > 0) {
+        uav.setPath({});
+        uav.setYawTarget(wrapAngle(uav.pose().yaw + 2.0 * kPi / 3.0));
+      }
+    }
+    if (approaching) look_steps = 0;
+
     // 2. Otherwise explore.
-    if (!end && !approaching) {
+    if (!end && !approaching && look_steps == 0) {
       bool need = !g.active || uav.pathDone();
       const char* why = !g.active ? "no target" : "path done";  // debug output only
       if (g.active && uav.pathDone()) {

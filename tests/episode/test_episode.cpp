@@ -130,3 +130,32 @@ TEST(Episode, FrontierSeenThroughADoorGetsACloserLook) {
   EXPECT_TRUE(on.success) << on.end_reason;
   EXPECT_EQ(on.collisions, 0);
 }
+
+TEST(Episode, LookAroundSeesTheStartRoomBeforeTheFirstPlan) {
+  // The chair stands behind the UAV (bearing -141 deg from the start, facing +x; the camera
+  // sees +-43.5 deg). With episode.look_around the UAV turns on the spot first: it sees the chair
+  // before it flies anywhere, and flies only the approach.
+  Config cfg = testConfig();
+  cfg.episode.look_around = true;
+  const EpisodeRun on = runEpisode(twoRoomSpec("frontier", "chair"), cfg);
+  ASSERT_TRUE(on.result.success) << on.result.end_reason;
+  EXPECT_FALSE(on.result.multi_room);
+  const Vec3 start = on.trajectory.front().pose.position;
+  size_t moved = 0;  // first sample away from the start
+  while (moved < on.trajectory.size() && (on.trajectory[moved].pose.position - start).norm() < 0.05) ++moved;
+  ASSERT_LT(moved, on.trajectory.size());
+  double turned = 0.0;  // yaw swept on the spot before that
+  for (size_t i = 1; i < moved; ++i)
+    turned += std::abs(wrapAngle(on.trajectory[i].pose.yaw - on.trajectory[i - 1].pose.yaw));
+  EXPECT_GT(turned, deg2rad(141.0 - 43.5)) << "left the start before the chair could be in view";
+  EXPECT_LE(on.result.path_length_m, on.result.shortest_path_m + 1.0);
+
+  cfg.episode.look_around = false;
+  const EpisodeRun off = runEpisode(twoRoomSpec("frontier", "chair"), cfg);
+  std::printf("[ look_around on / off ] %.2f m / %.2f m (shortest %.2f m)\n", on.result.path_length_m,
+              off.result.path_length_m, on.result.shortest_path_m);
+  ASSERT_TRUE(off.result.success) << off.result.end_reason;
+  size_t off_moved = 0;
+  while (off_moved < off.trajectory.size() && (off.trajectory[off_moved].pose.position - start).norm() < 0.05) ++off_moved;
+  EXPECT_LT(off_moved, moved);  // without it the UAV sets off at once
+}
