@@ -66,7 +66,7 @@ std::vector<ApproachPose> approachPoses(const OccupancyMap& map, const GraphDist
         const double horiz = to.head<2>().norm();
         const double zt = std::clamp(p.z(), box.min.z(), box.max.z());
         if (std::atan2(std::abs(p.z() - zt), std::max(horiz, 0.05)) > half_v) continue;  // the box centre in view
-        if (!seesBox(map, p, c, box, true)) continue;
+        if (!seesBox(map, p, c, box, false)) continue;
         const double cost = from_uav.toPoint(p);
         if (!std::isfinite(cost)) continue;
         out.push_back(ApproachPose{p, std::atan2(to.y(), to.x()), cost});
