@@ -48,6 +48,16 @@ RayHit walkSegment(double res, const Vec3& from, const Vec3& to, bool unknown_bl
     t_max[i] = (step[i] > 0 ? (key[i] + 1 - u[i]) : (u[i] - key[i])) * t_delta[i];
   }
   const int total = remaining[0] + remaining[1] + remaining[2];
+  // Whether voxel k, entered at segment parameter t, stops the walk (then `hit` says where).
+  auto stops = [&](const Vec3i& k, double t) {
+    const VoxelState st = state(k);
+    if (st != VoxelState::Occupied && !(unknown_blocks && st == VoxelState::Unknown)) return false;
+    hit.blocked = true;
+    hit.hit_state = st;
+    hit.distance = t * len;
+    hit.point = from + d * t;
+    return true;
+  };
   for (int s = 0; s < total; ++s) {
     const int axis = t_max[0] < t_max[1] ? (t_max[0] < t_max[2] ? 0 : 2) : (t_max[1] < t_max[2] ? 1 : 2);
     const double t = std::min(t_max[axis], 1.0);
@@ -55,25 +65,11 @@ RayHit walkSegment(double res, const Vec3& from, const Vec3& to, bool unknown_bl
       if (b == axis || remaining[b] == 0 || std::abs(t_max[b] - t_max[axis]) > kCornerEps) continue;
       Vec3i side = key;
       side[b] += step[b];
-      const VoxelState st = state(side);
-      if (st == VoxelState::Occupied || (unknown_blocks && st == VoxelState::Unknown)) {
-        hit.blocked = true;
-        hit.hit_state = st;
-        hit.distance = t * len;
-        hit.point = from + d * t;
-        return hit;
-      }
+      if (stops(side, t)) return hit;
     }
     key[axis] += step[axis];
     t_max[axis] = --remaining[axis] == 0 ? inf : t_max[axis] + t_delta[axis];
-    const VoxelState st = state(key);
-    if (st == VoxelState::Occupied || (unknown_blocks && st == VoxelState::Unknown)) {
-      hit.blocked = true;
-      hit.hit_state = st;
-      hit.distance = t * len;
-      hit.point = from + d * t;
-      return hit;
-    }
+    if (stops(key, t)) return hit;
   }
   return hit;
 }
