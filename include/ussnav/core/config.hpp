@@ -353,7 +353,7 @@ struct EpisodeConfig {
   bool end_on_collision = true;       // a collision ends the episode as a failure (DESIGN.md)
   bool close_look = true;             // a frontier still open at its reached viewpoint gets one more
                                       // try from the graph node nearest to it before it is dropped
-  bool look_around = false;           // at take-off, turn on the spot (three 120-degree steps) before
+  bool look_around = true;            // at take-off, turn on the spot (three 120-degree steps) before
                                       // the first plan: the camera sees the start room all round
   template <class V> void visit(V& v) {
     v.field("max_time_s", max_time_s, 1.0, 1e6, "s");
