@@ -11,6 +11,7 @@
 #include "ussnav/core/error.hpp"
 #include "ussnav/core/timing.hpp"
 #include "ussnav/episode/approach.hpp"
+#include "ussnav/episode/episode_debug.hpp"
 #include "ussnav/episode/episode_drawing.hpp"
 #include "ussnav/episode/episode_judge.hpp"
 #include "ussnav/episode/flight_path.hpp"
@@ -536,28 +537,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
           const ExplorationTarget& tg = targets[size_t(choice.target)];
           const Viewpoint& vp = tg.viewpoints[size_t(choice.viewpoint)];
           const auto p = flightPath(uav.pose().position, vp.position);
-          if (p && std::getenv("USSNAV_DEBUG_EPISODE")) {
-            std::fprintf(stderr, "  plan -> %s (%.2f %.2f) vp (%.2f %.2f) path", toString(tg.kind), tg.centroid.x(),
-                         tg.centroid.y(), vp.position.x(), vp.position.y());
-            for (const Vec3& q : *p) std::fprintf(stderr, " (%.2f %.2f %.2f)", q.x(), q.y(), q.z());
-            std::fprintf(stderr, "\n    gain %.0f region %d: %s%s%s\n", tg.gain, tg.region, choice.note.c_str(),
-                         decider ? " | " : "", decider ? decider->lastDecision().reason.c_str() : "");
-            if (decider)
-              for (const auto& sc : decider->lastDecision().scores)
-                if (const RegionState* r = decider->lastQuery().find(sc.region)) {
-                  std::string seen;
-                  for (const auto& l : r->objects) seen += " " + l;
-                  if (!r->beyond.empty()) seen += " | beyond:";
-                  for (const auto& l : r->beyond) seen += " " + l;
-                  std::fprintf(stderr, "      region %d (%s%s): chance %.3f value %.1f utility %.1f frontier gain %.0f of %.0f,%s\n",
-                               sc.region, r->label.empty() ? "unlabelled" : r->label.c_str(),
-                               r->corridor_shaped ? ", corridor" : "", sc.chance, sc.value, r->best_utility, r->frontier_gain,
-                               r->gain, seen.c_str());
-                }
-            for (const ExplorationTarget& o : targets)
-              std::fprintf(stderr, "      %s (%.2f %.2f) gain %.0f region %d\n", toString(o.kind), o.centroid.x(),
-                           o.centroid.y(), o.gain, o.region);
-          }
+          if (p && std::getenv("USSNAV_DEBUG_EPISODE")) printPlan(tg, vp, *p, choice, decider.get(), targets);
           if (p) {
             g.active = true;
             g.kind = tg.kind;
