@@ -61,11 +61,17 @@ RayHit walkSegment(double res, const Vec3& from, const Vec3& to, bool unknown_bl
   for (int s = 0; s < total; ++s) {
     const int axis = t_max[0] < t_max[1] ? (t_max[0] < t_max[2] ? 0 : 2) : (t_max[1] < t_max[2] ? 1 : 2);
     const double t = std::min(t_max[axis], 1.0);
-    for (int b = 0; b < 3; ++b) {  // an edge or corner crossed: the side voxels too
-      if (b == axis || remaining[b] == 0 || std::abs(t_max[b] - t_max[axis]) > kCornerEps) continue;
-      Vec3i side = key;
-      side[b] += step[b];
-      if (stops(side, t)) return hit;
+    // t_max[axis] is the least, and an axis with no steps left has t_max = inf: two compares
+    // tell an edge or corner crossing from the usual face crossing.
+    const int a1 = axis == 0 ? 1 : 0, a2 = axis == 2 ? 1 : 2;
+    const double tm = t_max[axis] + kCornerEps;
+    if (t_max[a1] <= tm || t_max[a2] <= tm) {
+      for (const int b : {a1, a2}) {  // an edge or corner crossed: the side voxels too
+        if (t_max[b] > tm) continue;
+        Vec3i side = key;
+        side[b] += step[b];
+        if (stops(side, t)) return hit;
+      }
     }
     key[axis] += step[axis];
     t_max[axis] = --remaining[axis] == 0 ? inf : t_max[axis] + t_delta[axis];
