@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <map>
 #include <optional>
 #include <set>
 
@@ -14,8 +13,10 @@
 #include "ussnav/episode/episode_debug.hpp"
 #include "ussnav/episode/episode_drawing.hpp"
 #include "ussnav/episode/episode_judge.hpp"
+#include "ussnav/episode/exploration_targets.hpp"
 #include "ussnav/episode/flight_path.hpp"
 #include "ussnav/episode/goal.hpp"
+#include "ussnav/episode/search_memory.hpp"
 #include "ussnav/eval/metrics.hpp"
 #include "ussnav/eval/region_oracle.hpp"
 #include "ussnav/eval/scene_quality.hpp"
@@ -46,12 +47,6 @@ struct Goal {
   std::vector<Vec2i> patch_cells;  // unseen targets
   std::vector<Vec3> path;
 };
-
-struct Blacklisted {
-  Vec3 centroid;
-  double until;
-};
-
 
 }  // namespace
 
@@ -139,27 +134,8 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
   };
 
   Goal g;
-  std::vector<Blacklisted> blacklist;
-  // close_look: frontiers reached once but still open (centroid, where the UAV was), next tried
-  // from the graph node nearest to them.
-  std::vector<std::pair<Vec3, Vec3>> looked;
-  auto lookedFrom = [&](const Vec3& c) -> const Vec3* {
-    for (const auto& [centroid, from] : looked)
-      if ((centroid - c).norm() < 0.75) return &from;
-    return nullptr;
-  };
-  // A viewpoint at the graph node nearest to c, at flight height, facing c (none on an empty graph).
-  auto nodeFacing = [&](const Vec3& c, int gain) -> std::optional<Viewpoint> {
-    const ConnectivityGraph& graph = mapper.graph();
-    const int n = graph.size() > 0 ? graph.nearestNode(c) : -1;
-    if (n < 0) return std::nullopt;
-    Viewpoint v;
-    v.position = graph.node(n).center;
-    v.position.z() = flight_z;
-    v.yaw = std::atan2(c.y() - v.position.y(), c.x() - v.position.x());
-    v.gain = gain;
-    return v;
-  };
+  TargetMemory memory;  // targets given up on (search_memory.hpp)
+  ObjectTries tries;    // goal objects tried
   std::set<int> misread_reported;         // debug output: objects reported as misreadings
   // A few frames misreading another object (a bed called "sofa") are no find: `o` is outvoted by
   // an object that is not the goal. Asked when an object is chosen and again when it is reached.
@@ -171,12 +147,6 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
                    o.id, o.label.c_str(), o.n_observations, by->id, by->label.c_str(), by->n_observations);
     return true;
   };
-  std::map<int, double> failed_objects;  // object id -> retry time
-  std::map<int, int> object_failures;     // object id -> failed approaches (kMaxObjectTries: dropped)
-  std::map<int, int> object_transits;     // object id -> transit flights towards it
-  std::map<int, int> transit_replans;     // object id -> transits planned again after a blocked path
-  std::map<int, int> far_failures;       // object id -> no approach pose while farther than transit_radius
-  constexpr int kMaxObjectTries = 3, kMaxTransits = 2, kMaxFarTries = 10, kMaxTransitReplans = 5;
   constexpr int kLookFrames = 5;  // frames at an approach pose for the detector to see a goal object
   int look_frames = 0;
   bool approaching = false;
@@ -190,29 +160,11 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
   int look_steps = ep.look_around ? 4 : 0;
   const char* slice_at = std::getenv("USSNAV_DEBUG_SLICE");  // print the band once, at this time
   double t = 0.0;
-  auto failObject = [&](int id) {
-    failed_objects[id] = ++object_failures[id] >= kMaxObjectTries ? 1e18 : t + ep.blacklist_s;
-  };
+  auto failObject = [&](int id) { tries.fail(id, t, ep.blacklist_s); };
   double next_cov = 0.0;
   std::vector<ExplorationTarget> targets;
 
   auto sample = [&] { run.trajectory.push_back({t, uav.pose()}); };
-  // An unreachable target is skipped for blacklist_s; the third time for good.
-  auto blacklistUnreachable = [&](const Vec3& c) {
-    const auto times = std::count_if(blacklist.begin(), blacklist.end(),
-                                     [&](const Blacklisted& b) { return (b.centroid - c).norm() < 0.75; });
-    blacklist.push_back({c, times >= 2 ? 1e18 : t + ep.blacklist_s});
-    if (std::getenv("USSNAV_DEBUG_EPISODE"))
-      std::fprintf(stderr, "[t=%.1f] unreachable (%.2f %.2f %.2f) x%d\n", t, c.x(), c.y(), c.z(), int(times) + 1);
-  };
-  auto pendingRetry = [&] {
-    return std::any_of(blacklist.begin(), blacklist.end(), [&](const Blacklisted& b) { return b.until > t && b.until < 1e17; }) ||
-           std::any_of(failed_objects.begin(), failed_objects.end(), [&](const auto& f) { return f.second > t && f.second < 1e17; });
-  };
-  auto blacklisted = [&](const Vec3& c) {
-    return std::any_of(blacklist.begin(), blacklist.end(),
-                       [&](const Blacklisted& b) { return b.until > t && (b.centroid - c).norm() < 0.75; });
-  };
 
   // Region semantics from a scene-graph snapshot (only when a reasoner is in use).
   std::vector<RegionSummary> summaries;
@@ -326,8 +278,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
       for (const MappedObject& o : mapper.objects()->objects()) {
         if (!o.confirmed || o.n_observations < ep.target_min_observations || !goal.matches(o.label)) continue;
         if (retry_transit && mapper.objects()->find(approach_object) != &o) continue;
-        auto it = failed_objects.find(o.id);
-        if (it != failed_objects.end() && it->second > t) continue;
+        if (tries.skipped(o.id, t)) continue;
         if (!inGoalRoom(o)) continue;
         if (isMisreading(o, t)) continue;
         const double d = (o.centroid - uav.pose().position).norm();
@@ -355,7 +306,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
           break;
         }
         if (!ok && retry_transit) ok = true;  // keep flying the transit
-        if (!ok && object_transits[best->id] < kMaxTransits) {
+        if (!ok && tries.mayTransit(best->id)) {
           // No pose the map can vouch for yet (the object was seen from afar, beyond the window or
           // through a door): fly to the graph node nearest to it, from where the window covers it.
           const int n = transitNode(graph, grid, best->box, best->centroid, flight_z, ep.transit_radius);
@@ -363,7 +314,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
           if (n >= 0 && (via - best->centroid).norm() <= ep.transit_radius &&
               (via - uav.pose().position).norm() > ep.goal_tolerance) {
             if (const auto p = flightPath(uav.pose().position, via)) {
-              ++object_transits[best->id];
+              tries.countTransit(best->id);
               if (std::getenv("USSNAV_DEBUG_EPISODE"))
                 std::fprintf(stderr, "[t=%.1f] object %d: transit to node %d (%.2f %.2f), %zu points\n", t, best->id, n,
                              via.x(), via.y(), p->size());
@@ -381,12 +332,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
           // later with one more transit, and only failures within transit_radius of it count
           // towards dropping it for good (a toilet missed this way ended an episode "explored").
           const bool near = (best->centroid - uav.pose().position).head<2>().norm() <= ep.transit_radius;
-          if (near || ++far_failures[best->id] > kMaxFarTries) {
-            failObject(best->id);
-          } else {
-            failed_objects[best->id] = t + ep.blacklist_s;
-            object_transits[best->id] = std::min(object_transits[best->id], kMaxTransits - 1);
-          }
+          tries.failFromAfar(best->id, t, ep.blacklist_s, near);
           if (std::getenv("USSNAV_DEBUG_EPISODE"))
             std::fprintf(stderr, "[t=%.1f] object %d (%s) at (%.2f %.2f %.2f): no approach (%zu poses, uav %.2f %.2f%s)\n", t,
                          best->id, best->label.c_str(), best->centroid.x(), best->centroid.y(), best->centroid.z(),
@@ -417,12 +363,12 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
         if (need && (uav.pose().position - g.vp.position).norm() <= ep.goal_tolerance) {
           // Reached the viewpoint: whatever is left of its target is not visible from here.
           if (g.kind == TargetKind::Unseen) camera.abandon(g.patch_cells);
-          const bool second = ep.close_look && g.kind == TargetKind::Frontier && !lookedFrom(g.centroid);
+          const bool second = ep.close_look && g.kind == TargetKind::Frontier && !memory.lookedFrom(g.centroid);
           if (second) {
-            looked.emplace_back(g.centroid, uav.pose().position);
+            memory.addLooked(g.centroid, uav.pose().position);
             ++R.close_looks;
           } else {
-            blacklist.push_back({g.centroid, 1e18});
+            memory.skipForGood(g.centroid);
           }
           if (std::getenv("USSNAV_DEBUG_EPISODE"))
             std::fprintf(stderr, "[t=%.1f] reached but %s target still open (%.2f %.2f %.2f)%s\n", t, toString(g.kind),
@@ -451,69 +397,12 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
       if (need && spins_left > 0 && !uav.idle()) need = false;  // finish the current spin step
       if (need) {
         last_check = t;
-        targets.clear();
-        const bool debug = std::getenv("USSNAV_DEBUG_EPISODE") != nullptr;
-        for (const Frontier& fr : frontiers.frontiers()) {
-          if (blacklisted(fr.centroid)) {
-            if (debug)
-              std::fprintf(stderr, "  skip frontier (%.2f %.2f) %zu cells: blacklisted\n", fr.centroid.x(),
-                           fr.centroid.y(), fr.cells.size());
-            continue;
-          }
-          ExplorationTarget tg;
-          tg.kind = TargetKind::Frontier;
-          tg.source_id = fr.id;
-          tg.centroid = fr.centroid;
-          tg.viewpoints = fr.viewpoints;
-          if (const Vec3* from = ep.close_look ? lookedFrom(fr.centroid) : nullptr) {
-            // Reached once and still open (a room seen through its door): the graph node nearest
-            // to it, if that is somewhere else than where the UAV looked from.
-            tg.viewpoints.clear();
-            const std::optional<Viewpoint> v = nodeFacing(fr.centroid, int(fr.cells.size()));
-            if (!v) continue;
-            if ((v->position.head<2>() - from->head<2>()).norm() < 0.5) {
-              blacklist.push_back({fr.centroid, 1e18});
-              continue;
-            }
-            tg.viewpoints.push_back(*v);
-          }
-          if (tg.viewpoints.empty()) {
-            // Viewpoints are computed while the frontier is in the rolling window; one found
-            // at the window's edge may have none. Fly to the graph node nearest to it (within
-            // 3 m), facing it, at half its cell count: there the window covers it again and
-            // its viewpoints are recomputed when its cells change (or it is skipped as reached).
-            const std::optional<Viewpoint> v = nodeFacing(fr.centroid, int(fr.cells.size() / 2));
-            if (!v) continue;
-            const double away = (v->position.head<2>() - fr.centroid.head<2>()).norm();
-            if (away > 3.0) {
-              if (debug)
-                std::fprintf(stderr, "  skip frontier (%.2f %.2f) %zu cells: no viewpoint, nearest node %.1f m away\n",
-                             fr.centroid.x(), fr.centroid.y(), fr.cells.size(), away);
-              continue;
-            }
-            tg.viewpoints.push_back(*v);
-          }
-          tg.gain = tg.viewpoints.front().gain * 1.0;
-          if (cfg.exploration.unknown_volume_weight > 0.0)
-            tg.gain += cfg.exploration.unknown_volume_weight *
-                       visibleUnknownVolume(mapper.grid(), tg.viewpoints.front().position,
-                                            tg.viewpoints.front().yaw, cfg.exploration);
-          targets.push_back(std::move(tg));
-        }
-        std::vector<UnseenPatch> patches = camera.patches();
-        for (const UnseenPatch& p : patches) {
-          if (p.viewpoints.empty() || blacklisted(p.centroid)) continue;
-          ExplorationTarget tg;
-          tg.kind = TargetKind::Unseen;
-          tg.source_id = p.id;
-          tg.centroid = p.centroid;
-          tg.viewpoints = p.viewpoints;
-          tg.gain = p.viewpoints.front().gain * 4.0;
-          targets.push_back(std::move(tg));
-        }
+        const std::vector<UnseenPatch> patches = camera.patches();
+        targets = collectTargets(frontiers, patches, memory, t, graph, grid, cfg.exploration, ep.close_look, flight_z,
+                                 std::getenv("USSNAV_DEBUG_EPISODE") != nullptr);
         if (std::getenv("USSNAV_DEBUG_EPISODE"))
           std::fprintf(stderr, "[t=%.1f] replan (%s): frontiers %zu (cells %zu) patches %zu targets %zu blacklist %zu spins %d\n", t,
-                       why, frontiers.frontiers().size(), frontiers.cellCount(), patches.size(), targets.size(), blacklist.size(), spins_left);
+                       why, frontiers.frontiers().size(), frontiers.cellCount(), patches.size(), targets.size(), memory.size(), spins_left);
         for (ExplorationTarget& tg : targets) {
           const int node = mapper.anchorNode(tg.viewpoints.front().position);
           tg.region = node >= 0 ? mapper.regions().regionOf(node) : -1;
@@ -553,7 +442,10 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
             break;
           }
           ++R.unreachable;
-          blacklistUnreachable(tg.centroid);
+          const int times = memory.skipUnreachable(tg.centroid, t, ep.blacklist_s);
+          if (std::getenv("USSNAV_DEBUG_EPISODE"))
+            std::fprintf(stderr, "[t=%.1f] unreachable (%.2f %.2f %.2f) x%d\n", t, tg.centroid.x(), tg.centroid.y(),
+                         tg.centroid.z(), times + 1);
           targets.erase(targets.begin() + choice.target);
         }
         if (!g.active) {
@@ -561,7 +453,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
           // the map catch up, then give up.
           if (spins_left < 0) spins_left = 3;
           if (spins_left == 0) {
-            if (!pendingRetry()) {
+            if (!memory.pendingRetry(t) && !tries.pendingRetry(t)) {
               R.end_reason = "explored";
               end = true;
             }  // else hover until a skipped target may be tried again
@@ -591,8 +483,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
         // The map now shows an obstacle on the way: choose again. A transit cut short this way
         // is no try of the object: it is planned again from here (house_6 "toilet": the transits
         // to the bathroom were blocked at the same door each time and the toilet never reached).
-        if (transit && ++transit_replans[approach_object] <= kMaxTransitReplans)
-          object_transits[approach_object] = std::max(0, object_transits[approach_object] - 1);
+        if (transit) tries.transitBlocked(approach_object);
         approaching = transit = false;
         uav.setPath({});
       } else if (uav.pathDone() && (uav.pose().position - approach.position).norm() > ep.goal_tolerance) {
@@ -618,27 +509,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
     const Pose before = uav.pose();
     if (!uav.step(sim.groundTruth(), dt)) {
       g.active = false;  // collision: the UAV dropped its path
-      if (std::getenv("USSNAV_DEBUG_EPISODE")) {
-        std::fprintf(stderr, "[t=%.1f] COLLISION at (%.2f %.2f %.2f) approaching=%d path:", t, before.position.x(),
-                     before.position.y(), before.position.z(), int(approaching));
-        for (const Vec3& q : g.path) std::fprintf(stderr, " (%.2f %.2f %.2f)", q.x(), q.y(), q.z());
-        std::fprintf(stderr, "\n");
-        const RollingGrid& gr = mapper.grid();
-        const Vec3i c = gr.keyOf(before.position);
-        for (int dz = -3; dz <= 3; dz += 3) {
-          std::fprintf(stderr, "  z%+d:\n", dz);
-          for (int dy = 4; dy >= -4; --dy) {
-            std::fprintf(stderr, "   ");
-            for (int dx = -4; dx <= 4; ++dx) {
-              const VoxelState st = gr.state(c + Vec3i(dx, dy, dz));
-              const Vec3 q = gr.centerOf(c + Vec3i(dx, dy, dz));
-              const bool gtocc = sim.groundTruth().sphereCollides(q, 0.02);
-              std::fprintf(stderr, "%c", st == VoxelState::Occupied ? (gtocc ? '#' : 'o') : st == VoxelState::Free ? (gtocc ? '!' : '.') : (gtocc ? 'U' : '?'));
-            }
-            std::fprintf(stderr, "\n");
-          }
-        }
-      }
+      if (std::getenv("USSNAV_DEBUG_EPISODE")) printCollision(t, before.position, approaching, g.path, mapper.grid(), sim.groundTruth());
       if (ep.end_on_collision) {
         R.end_reason = "collision";
         t += dt;

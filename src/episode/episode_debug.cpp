@@ -28,4 +28,28 @@ void printPlan(const ExplorationTarget& tg, const Viewpoint& vp, const std::vect
                  o.gain, o.region);
 }
 
+void printCollision(double t, const Vec3& at, bool approaching, const std::vector<Vec3>& path, const RollingGrid& grid,
+                    const GroundTruthGrid& truth) {
+  std::fprintf(stderr, "[t=%.1f] COLLISION at (%.2f %.2f %.2f) approaching=%d path:", t, at.x(), at.y(), at.z(),
+               int(approaching));
+  for (const Vec3& q : path) std::fprintf(stderr, " (%.2f %.2f %.2f)", q.x(), q.y(), q.z());
+  std::fprintf(stderr, "\n");
+  const Vec3i c = grid.keyOf(at);
+  for (int dz = -3; dz <= 3; dz += 3) {
+    std::fprintf(stderr, "  z%+d:\n", dz);
+    for (int dy = 4; dy >= -4; --dy) {
+      std::fprintf(stderr, "   ");
+      for (int dx = -4; dx <= 4; ++dx) {
+        const VoxelState st = grid.state(c + Vec3i(dx, dy, dz));
+        const bool solid = truth.sphereCollides(grid.centerOf(c + Vec3i(dx, dy, dz)), 0.02);
+        const char ch = st == VoxelState::Occupied ? (solid ? '#' : 'o')
+                        : st == VoxelState::Free   ? (solid ? '!' : '.')
+                                                   : (solid ? 'U' : '?');
+        std::fprintf(stderr, "%c", ch);
+      }
+      std::fprintf(stderr, "\n");
+    }
+  }
+}
+
 }  // namespace ussnav

@@ -1,0 +1,74 @@
+#pragma once
+// What the flight loop remembers about what it gave up on, so that it does not fly there again
+// at once, and when it may try again:
+//  - TargetMemory: exploration targets (frontiers, unseen patches) by centroid. One found
+//    unreachable is skipped for blacklist_s, the third time for good; one reached and still open
+//    is skipped for good, or (close_look) first tried once more from the graph node nearest to it.
+//  - ObjectTries: goal objects by id. A failed approach skips the object for blacklist_s, the
+//    kMaxObjectTries-th for good; transits (flights to a graph node near an object no approach
+//    pose is found for yet) are counted per object, and a transit cut short by a blocked path is
+//    refunded (up to kMaxTransitReplans); failures from afar count for good only after
+//    kMaxFarTries.
+// Time is the episode's clock (s). Plain state, no I/O.
+
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "ussnav/core/types.hpp"
+
+namespace ussnav {
+
+class TargetMemory {
+ public:
+  // Whether a target at centroid c is skipped at time t (within 0.75 m of a skipped one).
+  bool skipped(const Vec3& c, double t) const;
+  // Skipped for good (reached and still open, or no place to look at it from).
+  void skipForGood(const Vec3& c);
+  // Found unreachable at time t: skipped until t + retry_s, the third time for good. Returns how
+  // many times it was found unreachable before.
+  int skipUnreachable(const Vec3& c, double t, double retry_s);
+  // Whether a target skipped for a while becomes eligible again after t.
+  bool pendingRetry(double t) const;
+  size_t size() const { return skipped_.size(); }
+
+  // close_look: a target reached once but still open, and where the UAV looked at it from.
+  void addLooked(const Vec3& c, const Vec3& from) { looked_.emplace_back(c, from); }
+  // Where the UAV looked at the target at c from (nullptr: never looked at it).
+  const Vec3* lookedFrom(const Vec3& c) const;
+
+ private:
+  struct Skipped {
+    Vec3 centroid;
+    double until;
+  };
+  std::vector<Skipped> skipped_;
+  std::vector<std::pair<Vec3, Vec3>> looked_;
+};
+
+class ObjectTries {
+ public:
+  static constexpr int kMaxObjectTries = 3, kMaxTransits = 2, kMaxFarTries = 10, kMaxTransitReplans = 5;
+
+  // Whether object `id` is skipped at time t.
+  bool skipped(int id, double t) const;
+  // An approach failed (reached and not in view, or dropped on the way): skipped for retry_s,
+  // the kMaxObjectTries-th time for good.
+  void fail(int id, double t, double retry_s);
+  // No approach pose and no transit: from within the transit radius (`near`) a failure as above;
+  // from afar (the map around the object is what is missing) skipped for retry_s with one more
+  // transit allowed, and only the kMaxFarTries-th such failure counts as a failure.
+  void failFromAfar(int id, double t, double retry_s, bool near);
+  bool mayTransit(int id) const;
+  void countTransit(int id) { ++transits_[id]; }
+  // A transit cut short by a blocked path: no try of the object (up to kMaxTransitReplans times).
+  void transitBlocked(int id);
+  // Whether an object skipped for a while becomes eligible again after t.
+  bool pendingRetry(double t) const;
+
+ private:
+  std::map<int, double> retry_at_;  // id -> time it may be tried again (1e18: never)
+  std::map<int, int> failures_, transits_, transit_replans_, far_failures_;
+};
+
+}  // namespace ussnav

@@ -1,0 +1,67 @@
+#include "ussnav/episode/search_memory.hpp"
+
+#include <algorithm>
+
+namespace ussnav {
+
+namespace {
+constexpr double kSameTarget = 0.75;  // m: centroids this close are one target
+constexpr double kForGood = 1e18, kForGoodBelow = 1e17;
+}  // namespace
+
+bool TargetMemory::skipped(const Vec3& c, double t) const {
+  return std::any_of(skipped_.begin(), skipped_.end(),
+                     [&](const Skipped& s) { return s.until > t && (s.centroid - c).norm() < kSameTarget; });
+}
+
+void TargetMemory::skipForGood(const Vec3& c) { skipped_.push_back({c, kForGood}); }
+
+int TargetMemory::skipUnreachable(const Vec3& c, double t, double retry_s) {
+  const auto times = std::count_if(skipped_.begin(), skipped_.end(),
+                                   [&](const Skipped& s) { return (s.centroid - c).norm() < kSameTarget; });
+  skipped_.push_back({c, times >= 2 ? kForGood : t + retry_s});
+  return int(times);
+}
+
+bool TargetMemory::pendingRetry(double t) const {
+  return std::any_of(skipped_.begin(), skipped_.end(), [&](const Skipped& s) { return s.until > t && s.until < kForGoodBelow; });
+}
+
+const Vec3* TargetMemory::lookedFrom(const Vec3& c) const {
+  for (const auto& [centroid, from] : looked_)
+    if ((centroid - c).norm() < kSameTarget) return &from;
+  return nullptr;
+}
+
+bool ObjectTries::skipped(int id, double t) const {
+  const auto it = retry_at_.find(id);
+  return it != retry_at_.end() && it->second > t;
+}
+
+void ObjectTries::fail(int id, double t, double retry_s) {
+  retry_at_[id] = ++failures_[id] >= kMaxObjectTries ? kForGood : t + retry_s;
+}
+
+void ObjectTries::failFromAfar(int id, double t, double retry_s, bool near) {
+  if (near || ++far_failures_[id] > kMaxFarTries) {
+    fail(id, t, retry_s);
+  } else {
+    retry_at_[id] = t + retry_s;
+    transits_[id] = std::min(transits_[id], kMaxTransits - 1);
+  }
+}
+
+bool ObjectTries::mayTransit(int id) const {
+  const auto it = transits_.find(id);
+  return it == transits_.end() || it->second < kMaxTransits;
+}
+
+void ObjectTries::transitBlocked(int id) {
+  if (++transit_replans_[id] <= kMaxTransitReplans) transits_[id] = std::max(0, transits_[id] - 1);
+}
+
+bool ObjectTries::pendingRetry(double t) const {
+  return std::any_of(retry_at_.begin(), retry_at_.end(), [&](const auto& r) { return r.second > t && r.second < kForGoodBelow; });
+}
+
+}  // namespace ussnav

@@ -1,0 +1,95 @@
+// TargetMemory and ObjectTries: what the flight loop gives up on, for how long, and when for good.
+
+#include <gtest/gtest.h>
+
+#include "ussnav/episode/search_memory.hpp"
+
+using namespace ussnav;
+
+TEST(TargetMemory, AnUnreachableTargetIsSkippedForAWhileAndTheThirdTimeForGood) {
+  TargetMemory m;
+  const Vec3 a(1, 2, 1.2), near_a(1.5, 2.3, 1.2), b(4, 2, 1.2);
+  EXPECT_FALSE(m.skipped(a, 0.0));
+  EXPECT_EQ(m.skipUnreachable(a, 10.0, 20.0), 0);
+  EXPECT_TRUE(m.skipped(a, 10.0));
+  EXPECT_TRUE(m.skipped(near_a, 29.9));  // 0.58 m away: the same target
+  EXPECT_FALSE(m.skipped(b, 10.0));
+  EXPECT_FALSE(m.skipped(a, 30.0));      // tried again after 20 s
+  EXPECT_TRUE(m.pendingRetry(29.9));
+  EXPECT_FALSE(m.pendingRetry(30.0));
+  EXPECT_EQ(m.skipUnreachable(near_a, 30.0, 20.0), 1);
+  EXPECT_FALSE(m.skipped(a, 50.0));
+  EXPECT_EQ(m.skipUnreachable(a, 50.0, 20.0), 2);
+  EXPECT_TRUE(m.skipped(a, 1e9));         // the third time for good
+  EXPECT_FALSE(m.pendingRetry(80.0));     // nothing left to wait for
+}
+
+TEST(TargetMemory, SkippedForGoodAndLookedFrom) {
+  TargetMemory m;
+  const Vec3 door(3, 0, 1.2), from(1, 0, 1.2);
+  EXPECT_EQ(m.lookedFrom(door), nullptr);
+  m.addLooked(door, from);
+  ASSERT_NE(m.lookedFrom(door + Vec3(0.5, 0, 0)), nullptr);
+  EXPECT_EQ(*m.lookedFrom(door), from);
+  EXPECT_EQ(m.lookedFrom(door + Vec3(1.0, 0, 0)), nullptr);
+  EXPECT_FALSE(m.skipped(door, 5.0));  // looked at once: not skipped
+  m.skipForGood(door);
+  EXPECT_TRUE(m.skipped(door, 1e9));
+  EXPECT_FALSE(m.pendingRetry(5.0));
+  EXPECT_EQ(m.size(), 1u);
+}
+
+TEST(ObjectTries, FailedApproachesDropAnObjectTheThirdTime) {
+  ObjectTries o;
+  EXPECT_FALSE(o.skipped(7, 0.0));
+  o.fail(7, 10.0, 20.0);
+  EXPECT_TRUE(o.skipped(7, 29.0));
+  EXPECT_FALSE(o.skipped(8, 29.0));
+  EXPECT_TRUE(o.pendingRetry(29.0));
+  EXPECT_FALSE(o.skipped(7, 30.0));
+  o.fail(7, 30.0, 20.0);
+  EXPECT_FALSE(o.skipped(7, 50.0));
+  o.fail(7, 50.0, 20.0);
+  EXPECT_TRUE(o.skipped(7, 1e9));
+  EXPECT_FALSE(o.pendingRetry(60.0));
+}
+
+TEST(ObjectTries, TransitsAreCountedAndABlockedOneIsRefundedAFewTimes) {
+  ObjectTries o;
+  for (int i = 0; i < ObjectTries::kMaxTransits; ++i) {
+    EXPECT_TRUE(o.mayTransit(3));
+    o.countTransit(3);
+  }
+  EXPECT_FALSE(o.mayTransit(3));
+  for (int i = 0; i < ObjectTries::kMaxTransitReplans; ++i) {
+    o.transitBlocked(3);  // no try of the object: one more transit
+    EXPECT_TRUE(o.mayTransit(3)) << i;
+    o.countTransit(3);
+  }
+  o.transitBlocked(3);  // one more than kMaxTransitReplans: not refunded
+  EXPECT_FALSE(o.mayTransit(3));
+}
+
+TEST(ObjectTries, FailuresFromAfarCountOnlyAfterManyAndAllowOneMoreTransit) {
+  ObjectTries o;
+  o.countTransit(5);
+  o.countTransit(5);
+  ASSERT_FALSE(o.mayTransit(5));
+  double t = 0.0;
+  for (int i = 0; i < ObjectTries::kMaxFarTries; ++i, t += 30.0) {
+    o.failFromAfar(5, t, 20.0, false);
+    EXPECT_TRUE(o.skipped(5, t + 19.0));
+    EXPECT_FALSE(o.skipped(5, t + 20.0));
+    EXPECT_TRUE(o.mayTransit(5));  // one more transit allowed
+    o.countTransit(5);
+  }
+  // The next failures from afar count as failed approaches: three of them drop it for good.
+  for (int i = 0; i < ObjectTries::kMaxObjectTries; ++i, t += 30.0) o.failFromAfar(5, t, 20.0, false);
+  EXPECT_TRUE(o.skipped(5, 1e9));
+  // From near, a failure counts at once.
+  o.failFromAfar(6, 0.0, 20.0, true);
+  o.failFromAfar(6, 30.0, 20.0, true);
+  EXPECT_FALSE(o.skipped(6, 60.0));
+  o.failFromAfar(6, 60.0, 20.0, true);
+  EXPECT_TRUE(o.skipped(6, 1e9));
+}
