@@ -16,7 +16,7 @@
 // P(room | object label): the label is matched to the categories' names and aliases (spaces
 // aside: "armchair" is ArmChair), else through the MP3D raw-label table, else through a WordNet
 // synonym ("tv" -> tv_monitor by its alias television), else by the text encoder to every
-// category within match_cosine ("couch" -> Sofa), failing that to the nearest within cosine 0.6 at
+// category within match_cosine ("couch" -> Sofa), failing that to the nearest within cosine 0.7 at
 // half weight ("refrigerator" -> Fridge). Two more kinds of row come from the words themselves:
 // a matched label's accessories, the compounds one word longer that it (or a WordNet synonym)
 // modifies ("tv" -> TVStand, "toilet" -> ToiletPaper), and a room the label or its nearest
