@@ -25,17 +25,24 @@ bool seesBox(const OccupancyMap& map, const Vec3& p, const Vec3& c, const Aabb& 
 }
 
 int transitNode(const ConnectivityGraph& graph, const OccupancyMap& map, const Aabb& box, const Vec3& centroid,
-                double flight_z, double radius) {
+                double flight_z, double radius, const std::vector<Vec3>& avoid) {
   if (graph.size() == 0) return -1;
+  const auto avoided = [&](int n) {
+    return std::any_of(avoid.begin(), avoid.end(),
+                       [&](const Vec3& a) { return (graph.node(n).center - a).head<2>().norm() < 1.0; });
+  };
   const Vec3 c = box.center();
-  int best = -1;
-  double best_d = std::numeric_limits<double>::infinity();
+  int best = -1, nearest = -1;
+  double best_d = std::numeric_limits<double>::infinity(), nearest_d = best_d;
   for (const int n : graph.nodesWithin(centroid, radius)) {
+    if (avoided(n)) continue;
     const Vec3 at(graph.node(n).center.x(), graph.node(n).center.y(), flight_z);
     const double d = (at - centroid).norm();
+    if (d < nearest_d) nearest = n, nearest_d = d;
     if (d < best_d && seesBox(map, at, c, box, true)) best = n, best_d = d;
   }
   if (best >= 0) return best;
+  if (!avoid.empty() && nearest >= 0) return nearest;
   return graph.nearestNode(centroid);
 }
 

@@ -60,6 +60,18 @@ void ObjectTries::transitBlocked(int id) {
   if (++transit_replans_[id] <= kMaxTransitReplans) transits_[id] = std::max(0, transits_[id] - 1);
 }
 
+const std::vector<Vec3>& ObjectTries::noPoseSpots(int id) const {
+  static const std::vector<Vec3> none;
+  const auto it = no_pose_from_.find(id);
+  return it == no_pose_from_.end() ? none : it->second;
+}
+
+bool ObjectTries::lookedInVainFrom(int id, const Vec3& p) const {
+  const auto it = no_view_from_.find(id);
+  return it != no_view_from_.end() &&
+         std::any_of(it->second.begin(), it->second.end(), [&](const Vec3& q) { return (q - p).norm() < 0.5; });
+}
+
 bool ObjectTries::pendingRetry(double t) const {
   return std::any_of(retry_at_.begin(), retry_at_.end(), [&](const auto& r) { return r.second > t && r.second < kForGoodBelow; });
 }

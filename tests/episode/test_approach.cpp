@@ -157,3 +157,23 @@ TEST(Approach, TransitToANodeThatSeesTheObject) {
   EXPECT_EQ(transitNode(flight.graph, flight.grid, kFridge, centroid, kFlightZ, 0.01), nearest);
   EXPECT_EQ(transitNode(ConnectivityGraph{}, flight.grid, kFridge, centroid, kFlightZ, 3.0), -1);
 }
+
+TEST(Approach, TransitAvoidsSpotsWithNoPose) {
+  // A transit that ended at a node with no approach pose found there: the next one goes to
+  // another node, 1 m or more from it, still in the fridge's room.
+  const test::SceneFlight flight = fridgeBehindAWall();
+  const Vec3 centroid(4.325, 4.2, 0.9);
+  const int first = transitNode(flight.graph, flight.grid, kFridge, centroid, kFlightZ, 3.0);
+  ASSERT_GE(first, 0);
+  const Vec3 spot = flight.graph.node(first).center;
+  const int next = transitNode(flight.graph, flight.grid, kFridge, centroid, kFlightZ, 3.0, {spot});
+  ASSERT_GE(next, 0);
+  EXPECT_NE(next, first);
+  EXPECT_GE((flight.graph.node(next).center - spot).head<2>().norm(), 1.0);
+  EXPECT_GT(flight.graph.node(next).center.y(), 4.06);
+  // The nearest node (behind the wall) avoided too, with nothing else within the radius: the
+  // nearest node after all.
+  const int nearest = flight.graph.nearestNode(centroid);
+  EXPECT_EQ(transitNode(flight.graph, flight.grid, kFridge, centroid, kFlightZ, 0.01, {flight.graph.node(nearest).center}),
+            nearest);
+}

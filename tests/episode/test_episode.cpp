@@ -159,3 +159,22 @@ TEST(Episode, LookAroundSeesTheStartRoomBeforeTheFirstPlan) {
   while (off_moved < off.trajectory.size() && (off.trajectory[off_moved].pose.position - start).norm() < 0.05) ++off_moved;
   EXPECT_LT(off_moved, moved);  // without it the UAV sets off at once
 }
+
+TEST(Episode, AGoalSightedInAFewFramesIsApproachedAndDeclaredOnlyWhenSeenOftenEnough) {
+  // From the start room the camera sees the bed through the door for a few frames of the
+  // take-off turn: fewer than target_min_observations. The sighting is approached at once, with
+  // no exploration target planned, and declared from the pose once seen often enough there.
+  Config cfg = testConfig();
+  cfg.episode.look_around = true;
+  const EpisodeResult r = runEpisode(twoRoomSpec("full", "bed"), cfg).result;
+  ASSERT_TRUE(r.success) << r.end_reason;
+  EXPECT_EQ(r.replans, 0);
+  EXPECT_LE(r.path_length_m, r.shortest_path_m + 1.0);
+  // However it is approached, an object seen fewer times than that is never declared.
+  cfg.episode.target_min_observations = 100000;
+  cfg.episode.max_time_s = 60.0;
+  const EpisodeResult never = runEpisode(twoRoomSpec("full", "bed"), cfg).result;
+  EXPECT_FALSE(never.success);
+  EXPECT_FALSE(never.found_object.has_value()) << never.end_reason;
+  EXPECT_NE(never.end_reason, "wrong_object");
+}

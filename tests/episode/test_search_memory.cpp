@@ -93,3 +93,16 @@ TEST(ObjectTries, FailuresFromAfarCountOnlyAfterManyAndAllowOneMoreTransit) {
   o.failFromAfar(6, 60.0, 20.0, true);
   EXPECT_TRUE(o.skipped(6, 1e9));
 }
+
+TEST(ObjectTries, SpotsLookedFromInVainAreKeptPerObject) {
+  ObjectTries o;
+  EXPECT_FALSE(o.lookedInVainFrom(4, Vec3(1, 1, 1.2)));
+  o.noViewFrom(4, Vec3(1, 1, 1.2));
+  EXPECT_TRUE(o.lookedInVainFrom(4, Vec3(1.3, 1.2, 1.2)));   // 0.36 m away
+  EXPECT_FALSE(o.lookedInVainFrom(4, Vec3(1.6, 1, 1.2)));    // 0.6 m away
+  EXPECT_FALSE(o.lookedInVainFrom(5, Vec3(1, 1, 1.2)));      // another object
+  EXPECT_TRUE(o.noPoseSpots(4).empty());
+  o.noPoseFrom(4, Vec3(2, 2, 1.2));
+  ASSERT_EQ(o.noPoseSpots(4).size(), 1u);
+  EXPECT_TRUE(o.noPoseSpots(5).empty());
+}

@@ -47,9 +47,11 @@ bool seesBox(const OccupancyMap& map, const Vec3& p, const Vec3& box_center, con
 // through a door): the graph node within `radius` of `centroid` nearest to it whose centre, at
 // flight height, sees the box through space seen free (seesBox); else, the map around the object
 // being what is missing, the node nearest to `centroid`. The nearest node may be on the other
-// side of the wall the object stands against, no place to look from. -1 on an empty graph.
+// side of the wall the object stands against, no place to look from: nodes within 1 m (in plan)
+// of a point in `avoid` (where a transit already ended with no approach pose) are not chosen,
+// unless no other node is left. -1 on an empty graph.
 int transitNode(const ConnectivityGraph& graph, const OccupancyMap& map, const Aabb& box, const Vec3& centroid,
-                double flight_z, double radius);
+                double flight_z, double radius, const std::vector<Vec3>& avoid = {});
 
 // Up to `max_poses` poses, cheapest first; empty when none qualifies.
 std::vector<ApproachPose> approachPoses(const OccupancyMap& map, const GraphDistances& from_uav, const Aabb& box,

@@ -8,10 +8,12 @@
 //    kMaxObjectTries-th for good; transits (flights to a graph node near an object no approach
 //    pose is found for yet) are counted per object, and a transit cut short by a blocked path is
 //    refunded (up to kMaxTransitReplans); failures from afar count for good only after
-//    kMaxFarTries.
+//    kMaxFarTries. A sighting (an object seen too few times to be declared yet) is approached
+//    once: when that fails, it waits until it has been seen often enough, no failure counted.
 // Time is the episode's clock (s). Plain state, no I/O.
 
 #include <map>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -65,10 +67,23 @@ class ObjectTries {
   void transitBlocked(int id);
   // Whether an object skipped for a while becomes eligible again after t.
   bool pendingRetry(double t) const;
+  // The approach to a sighting failed: it is not approached again as a sighting.
+  void sightingFailed(int id) { sightings_failed_.insert(id); }
+  bool sightingChecked(int id) const { return sightings_failed_.count(id) > 0; }
+  // Where the UAV stood, near object `id`, when no approach pose was found for it: the next
+  // transit goes elsewhere (transitNode's `avoid`).
+  void noPoseFrom(int id, const Vec3& where) { no_pose_from_[id].push_back(where); }
+  const std::vector<Vec3>& noPoseSpots(int id) const;
+  // An approach pose from which the detector did not see object `id`: poses within 0.5 m of it
+  // are not flown to again for that object (the map said it was in view; the camera disagreed).
+  void noViewFrom(int id, const Vec3& where) { no_view_from_[id].push_back(where); }
+  bool lookedInVainFrom(int id, const Vec3& p) const;
 
  private:
   std::map<int, double> retry_at_;  // id -> time it may be tried again (1e18: never)
   std::map<int, int> failures_, transits_, transit_replans_, far_failures_;
+  std::set<int> sightings_failed_;
+  std::map<int, std::vector<Vec3>> no_pose_from_, no_view_from_;
 };
 
 }  // namespace ussnav
