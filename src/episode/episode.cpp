@@ -166,12 +166,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
     const MappedObject* o = mapper.objects() ? mapper.objects()->find(id) : nullptr;
     return o && o->n_observations < ep.target_min_observations;
   };
-  auto failObject = [&](int id) {
-    if (isSighting(id))
-      tries.sightingFailed(id);
-    else
-      tries.fail(id, t, ep.blacklist_s);
-  };
+  auto failObject = [&](int id) { tries.fail(id, t, ep.blacklist_s, isSighting(id)); };
   double next_cov = 0.0;
   std::vector<ExplorationTarget> targets;
 
@@ -358,10 +353,7 @@ EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeP
           // No place to look from here (house_6 "toilet": the node nearest to it is behind the
           // wall it stands against, and three transits there dropped it): the next one goes elsewhere.
           if (near) tries.noPoseFrom(best->id, uav.pose().position);
-          if (isSighting(best->id))
-            tries.sightingFailed(best->id);
-          else
-            tries.failFromAfar(best->id, t, ep.blacklist_s, near);
+          tries.failFromAfar(best->id, t, ep.blacklist_s, near, isSighting(best->id));
           if (std::getenv("USSNAV_DEBUG_EPISODE"))
             std::fprintf(stderr, "[t=%.1f] object %d (%s) at (%.2f %.2f %.2f): no approach (%zu poses, uav %.2f %.2f%s)\n", t,
                          best->id, best->label.c_str(), best->centroid.x(), best->centroid.y(), best->centroid.z(),

@@ -38,11 +38,13 @@ bool ObjectTries::skipped(int id, double t) const {
   return it != retry_at_.end() && it->second > t;
 }
 
-void ObjectTries::fail(int id, double t, double retry_s) {
+void ObjectTries::fail(int id, double t, double retry_s, bool sighting) {
+  if (sighting) return sightingFailed(id);
   retry_at_[id] = ++failures_[id] >= kMaxObjectTries ? kForGood : t + retry_s;
 }
 
-void ObjectTries::failFromAfar(int id, double t, double retry_s, bool near) {
+void ObjectTries::failFromAfar(int id, double t, double retry_s, bool near, bool sighting) {
+  if (sighting) return sightingFailed(id);
   if (near || ++far_failures_[id] > kMaxFarTries) {
     fail(id, t, retry_s);
   } else {

@@ -106,3 +106,14 @@ TEST(ObjectTries, SpotsLookedFromInVainAreKeptPerObject) {
   ASSERT_EQ(o.noPoseSpots(4).size(), 1u);
   EXPECT_TRUE(o.noPoseSpots(5).empty());
 }
+
+TEST(ObjectTries, AFailedSightingCountsNoFailure) {
+  ObjectTries o;
+  for (int i = 0; i < ObjectTries::kMaxObjectTries + 1; ++i) o.fail(9, 10.0 * i, 20.0, true);
+  EXPECT_FALSE(o.skipped(9, 1.0));  // no retry wait, never dropped
+  EXPECT_TRUE(o.sightingChecked(9));
+  o.failFromAfar(10, 0.0, 20.0, true, true);
+  EXPECT_FALSE(o.skipped(10, 1.0));
+  EXPECT_TRUE(o.sightingChecked(10));
+  EXPECT_FALSE(o.sightingChecked(11));
+}

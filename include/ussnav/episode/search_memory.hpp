@@ -55,12 +55,13 @@ class ObjectTries {
   // Whether object `id` is skipped at time t.
   bool skipped(int id, double t) const;
   // An approach failed (reached and not in view, or dropped on the way): skipped for retry_s,
-  // the kMaxObjectTries-th time for good.
-  void fail(int id, double t, double retry_s);
+  // the kMaxObjectTries-th time for good; for a `sighting`, only sightingFailed(id).
+  void fail(int id, double t, double retry_s, bool sighting = false);
   // No approach pose and no transit: from within the transit radius (`near`) a failure as above;
   // from afar (the map around the object is what is missing) skipped for retry_s with one more
-  // transit allowed, and only the kMaxFarTries-th such failure counts as a failure.
-  void failFromAfar(int id, double t, double retry_s, bool near);
+  // transit allowed, and only the kMaxFarTries-th such failure counts as a failure. For a
+  // `sighting`, only sightingFailed(id).
+  void failFromAfar(int id, double t, double retry_s, bool near, bool sighting = false);
   bool mayTransit(int id) const;
   void countTransit(int id) { ++transits_[id]; }
   // A transit cut short by a blocked path: no try of the object (up to kMaxTransitReplans times).
