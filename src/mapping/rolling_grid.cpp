@@ -231,8 +231,17 @@ inline void RollingGrid::applyMiss(size_t idx, int x, int y, int z, InsertStats&
 // p: end point in local voxel units (origin = window min corner). Returns inside the window
 // get their hit now (once per voxel per frame: a second return in the same voxel adds no
 // ray); everything else becomes an open ray clipped to the window, carved to its end.
-void RollingGrid::addEndpoint(const Vec3f& s, const Vec3f& p, bool is_return, InsertStats& st) {
+// A return on a voxel face (a surface at a multiple of the resolution, as the simulator's
+// ground truth puts walls) is counted in the voxel behind the face, kReturnInside voxels along
+// the ray: otherwise rounding puts it in the free voxel in front, which rays grazing the wall on
+// their way to its other points clear again, and a wall seen only from that side stays unknown
+// (house_18: the bathroom side of the wall behind the fridge).
+void RollingGrid::addEndpoint(const Vec3f& s, const Vec3f& p_in, bool is_return, InsertStats& st) {
+  constexpr float kReturnInside = 0.01f;
+  Vec3f p = p_in;
   if (is_return) {
+    const float n = (p - s).norm();
+    if (n > 1e-6f) p += (p - s) * (kReturnInside / n);
     if (p.x() >= 0 && p.y() >= 0 && p.z() >= 0 && p.x() < dims_.x() && p.y() < dims_.y() && p.z() < dims_.z()) {
       ++st.hits;
       const Vec3i k(int(p.x()), int(p.y()), int(p.z()));

@@ -2,7 +2,9 @@
 // An OccupancyMap adaptor that inflates obstacles by a radius, so that the path searches and
 // line-of-sight checks written for voxels (castRay, findGraphPath, shortcutPolyline) keep a
 // UAV's body clear of walls: a voxel is Occupied when an Occupied voxel of the base map lies
-// within `radius` of its centre, Unknown when the base says Unknown, else Free. Answers are
+// within `radius` of its centre, else Unknown when the base says Unknown, else Free. (An unseen
+// voxel next to a seen wall is Occupied too: a path through unseen space, the last resort, still
+// keeps its margin from what is known.) Answers are
 // cached per voxel for the adaptor's lifetime: make one per planning step (the base map must
 // not change meanwhile). Cost: O((radius / res)^3) base lookups per new voxel.
 

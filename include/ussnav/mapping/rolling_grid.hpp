@@ -3,7 +3,9 @@
 // 0.1 m, centred on the UAV in all three axes). Voxels live in a ring buffer (index = key mod
 // dims), so moveTo() resets only the voxels that leave: O(voxels leaving), no allocation.
 // Insertion casts one ray per distinct end voxel per frame (hit first, then misses; each voxel
-// updated at most once per frame); rays are clipped to the window. Memory: 4 bytes per voxel
+// updated at most once per frame); rays are clipped to the window. A return counts in the voxel
+// 1 % of a voxel beyond it along its ray: one on a voxel face (the simulator's walls lie on a
+// 5 cm lattice) marks the voxel behind the face, not the free one in front. Memory: 4 bytes per voxel
 // (int16 log-odds, state byte, frame-stamp byte) plus per-frame scratch, see memoryBytes().
 // Per frame a driver calls: moveTo(uav position); insertScan(scan) or insertDepth(frame);
 // CoverageMask::update(grid) and any other change-log reader; clearChanges().
