@@ -55,11 +55,12 @@ std::optional<FlightPlan> planFlightPathLadder(const ConnectivityGraph& g, const
                                                const Vec3& to, const FlightPathOptions& opt,
                                                std::span<const double> clearances);
 
-// The flight loop's settings for a UAV flying at `flight_z` (episode.cpp, route_flight.cpp):
-// episode.clearance, the UAV's body radius + 0.02 m, the band flight_z - 0.7 .. + 0.8 m (never
-// below radius + 0.25 m), graph points at flight_z - 0.3 .. + kApproachAbove, and the margin
-// ladder episode.clearance, then radius + 0.1 m and radius + 0.05 m where narrower (a point in a
-// voxel is up to 0.087 m from its centre).
+// The flight loop's settings for a UAV flying at `flight_z` (src/episode/flight_loop.hpp,
+// route_flight.cpp): episode.clearance, the UAV's body radius + 0.02 m, the band
+// flight_z - 0.7 .. + 0.8 m (never below radius + 0.25 m), graph points at
+// flight_z - 0.3 .. + kApproachAbove, and the margin ladder episode.clearance, then
+// radius + 0.1 m and radius + 0.05 m where narrower (a point in a voxel is up to 0.087 m from
+// its centre).
 // Whether the first `horizon` metres of a polyline cross an obstacle of `map` (pass an
 // InflatedMap for a margin). When the polyline starts inside an obstacle (the UAV inside the
 // margin), the first segment is the escape step out of it and is not judged.

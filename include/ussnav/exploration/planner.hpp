@@ -39,8 +39,9 @@ struct ExplorationTarget {
   int region = -1;                   // region of the node nearest the best viewpoint, -1 none
 };
 
-// Gain units (set by the flight loop, episode.cpp): a visible frontier cell counts 1, plus
-// exploration.unknown_volume_weight per m^3 of unknown space behind it; a camera-unseen cell 4.
+// Gain units (set by the flight loop, src/episode/flight_loop.hpp): a visible frontier cell
+// counts 1, plus exploration.unknown_volume_weight per m^3 of unknown space behind it; a
+// camera-unseen cell 4.
 
 struct PlanInput {
   const ConnectivityGraph* graph = nullptr;
