@@ -142,8 +142,9 @@ TEST(BuiltinReasoner, ChanceDecidesOnlyWhenItStandsOut) {
   CoarseQuery q;
   q.regions = {state(4, {}, 0), state(5, {}, 3, 100, 10), state(6, {}, 3, 60, 10)};
   q.current_region = 4;
-  auto choose = [&](double s5, double s6, double ratio) {
-    return chooseByChance(q, [&](const RegionState& r) { return r.id == 5 ? s5 : r.id == 6 ? s6 : 0.0; }, ratio);
+  auto choose = [&](double s5, double s6, double ratio, double gap = 0.0) {
+    return chooseByChance(q, [&](const RegionState& r) { return r.id == 5 ? s5 : r.id == 6 ? s6 : 0.0; }, ratio,
+                          gap);
   };
   // Twice the chance: region 6 is worth (0.40 + 0.02) * 6 = 2.52 against (0.20 + 0.02) * 10 = 2.2.
   EXPECT_EQ(choose(0.20, 0.40, 1.5).region, 6);
@@ -165,6 +166,12 @@ TEST(BuiltinReasoner, ChanceDecidesOnlyWhenItStandsOut) {
   EXPECT_TRUE(d.global_utility);
   EXPECT_NE(d.reason.find("no region's chance stands out"), std::string::npos) << d.reason;
   EXPECT_EQ(choose(0.20, 0.30, 1.25).region, 6);   // 0.30 >= 1.25 x 0.20
+  // Near the floor a ratio says little: 0.09 against 0.04 is over 2x, but only 0.05 more.
+  EXPECT_EQ(choose(0.04, 0.09, 1.5).region, 6);  // (0.11 x 6 x 1.2 = 0.79 > 0.06 x 10)
+  EXPECT_EQ(choose(0.04, 0.09, 1.5, 0.1).region, 5);
+  EXPECT_TRUE(choose(0.04, 0.09, 1.5, 0.1).global_utility);
+  EXPECT_EQ(choose(0.20, 0.35, 1.5, 0.1).region, 6);  // 1.75x and 0.15 more: acted on
+  EXPECT_EQ(choose(0.20, 0.35, 1.5, 0.2).region, 5);  // a wider gap asked for: not
   // Alike regions (no semantics): the best gain / cost target's region even against the bonus.
   q.regions[2] = state(6, {}, 3, 90, 10);
   EXPECT_EQ(choose(0.2, 0.2, 0.0).region, 6);

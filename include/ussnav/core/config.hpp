@@ -413,6 +413,9 @@ struct ReasoningConfig {
   // builtin/oracle: act on a region's chance only when it is at least this many times the
   // chance of the global-utility region (BuiltinReasoner::kMinChanceRatio); 0 = always
   double min_chance_ratio = 1.5;
+  // ... and at least this much higher (chances near the floor differ by noise: 0.09 against
+  // 0.06 for a bed in a kitchen and a living room); 0 = ratio alone
+  double min_chance_gap = 0.1;
   LlmConfig llm;
   template <class V> void visit(V& v) {
     v.choice("reasoner", reasoner, {"builtin", "llm", "oracle", "oracle-labels"});
@@ -421,6 +424,7 @@ struct ReasoningConfig {
     v.field("label_queue", label_queue, 1, 10000, "requests");
     v.field("decision_min_interval_s", decision_min_interval_s, 0.0, 1e4, "s");
     v.field("min_chance_ratio", min_chance_ratio, 0.0, 100.0, "x");
+    v.field("min_chance_gap", min_chance_gap, 0.0, 1.0, "chance");
     v.section("llm", llm);
   }
 };
