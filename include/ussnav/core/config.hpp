@@ -414,7 +414,7 @@ struct ReasoningConfig {
   // chance of the global-utility region (BuiltinReasoner::kMinChanceRatio); 0 = always
   double min_chance_ratio = 1.5;
   // ... and at least this much higher (chances near the floor differ by noise: 0.09 against
-  // 0.06 for a bed in a kitchen and a living room); 0 = ratio alone
+  // 0.06 for a bed in two regions with nothing of a bedroom in sight); 0 = the ratio alone
   double min_chance_gap = 0.1;
   LlmConfig llm;
   template <class V> void visit(V& v) {
