@@ -84,9 +84,8 @@ void FlightLoop::setupReasoning(const EpisodeSpec& spec) {
     if (name == "oracle" || name == "oracle-labels") {
       oracle_ = std::make_shared<OracleReasoner>(
           sim_.world(), roomsOf(sim_.world(), truth_.instances), std::make_shared<BuiltinReasoner>(priors_),
-          cfg_.reasoning.min_chance_ratio,
-          name == "oracle" ? OracleReasoner::Knows::GoalRooms : OracleReasoner::Knows::RoomTypes,
-          cfg_.reasoning.min_chance_gap);
+          chanceRule(cfg_.reasoning),
+          name == "oracle" ? OracleReasoner::Knows::GoalRooms : OracleReasoner::Knows::RoomTypes);
       reasoner_ = oracle_;
     } else {
       reasoner_ = makeReasoner(cfg_.reasoning, priors_);

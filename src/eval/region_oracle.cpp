@@ -10,12 +10,11 @@
 namespace ussnav {
 
 OracleReasoner::OracleReasoner(const World& world, std::set<int> goal_rooms, std::shared_ptr<BuiltinReasoner> builtin,
-                               double min_chance_ratio, Knows knows, double min_chance_gap)
+                               ChanceRule rule, Knows knows)
     : world_(world),
       goal_rooms_(std::move(goal_rooms)),
       builtin_(std::move(builtin)),
-      min_chance_ratio_(min_chance_ratio),
-      min_chance_gap_(min_chance_gap),
+      rule_(rule),
       knows_(knows) {
   for (const Door& d : world_.doors) {
     if (goal_rooms_.count(d.room_a) && d.room_b >= 0) next_to_goal_.insert(d.room_b);
@@ -63,7 +62,7 @@ double OracleReasoner::chance(const CoarseQuery& q, const RegionState& r) const 
 }
 
 CoarseDecision OracleReasoner::chooseRegion(const CoarseQuery& q) {
-  return chooseByChance(q, [&](const RegionState& r) { return chance(q, r); }, min_chance_ratio_, min_chance_gap_);
+  return chooseByChance(q, [&](const RegionState& r) { return chance(q, r); }, rule_);
 }
 
 std::set<int> roomsOf(const World& world, const std::vector<const Object*>& objects) {

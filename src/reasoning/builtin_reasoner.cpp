@@ -43,12 +43,8 @@ std::string article(const std::string& w) {
 
 }  // namespace
 
-BuiltinReasoner::BuiltinReasoner(std::shared_ptr<const CommonsensePriors> priors, double min_chance_ratio,
-                                 double min_chance_gap)
-    : priors_(std::move(priors)),
-      min_chance_ratio_(min_chance_ratio),
-      min_chance_gap_(min_chance_gap),
-      hallway_(priors_->roomIndex("hallway")) {}
+BuiltinReasoner::BuiltinReasoner(std::shared_ptr<const CommonsensePriors> priors, ChanceRule rule)
+    : priors_(std::move(priors)), rule_(rule), hallway_(priors_->roomIndex("hallway")) {}
 
 std::vector<double> BuiltinReasoner::roomDistribution(const std::vector<std::string>& labels, double* known,
                                                       bool corridor_shaped) const {
@@ -190,12 +186,11 @@ double blendChance(const RegionState& r, double s_self, double s_next) {
 }
 
 CoarseDecision BuiltinReasoner::chooseRegion(const CoarseQuery& q) {
-  return chooseByChance(q, [&](const RegionState& r) { return targetChance(q, r); }, min_chance_ratio_,
-                        min_chance_gap_);
+  return chooseByChance(q, [&](const RegionState& r) { return targetChance(q, r); }, rule_);
 }
 
 CoarseDecision chooseByChance(const CoarseQuery& q, const std::function<double(const RegionState&)>& chance,
-                              double min_chance_ratio, double min_chance_gap) {
+                              ChanceRule rule) {
   const Stopwatch sw;
   CoarseDecision d;
   double best = -1.0;
@@ -218,8 +213,7 @@ CoarseDecision chooseByChance(const CoarseQuery& q, const std::function<double(c
   }
   // Semantics too weak to act on: the global-utility choice. Near the floor (nothing in sight
   // says much about the goal) chances differ by noise, so the ratio alone is not enough.
-  if (global && global->id != d.region && min_chance_ratio > 0.0 &&
-      (best_s < min_chance_ratio * global_s || best_s - global_s < min_chance_gap)) {
+  if (global && global->id != d.region && !rule.standsOut(best_s, global_s)) {
     d.region = global->id, best_s = global_s;
     d.global_utility = true;
   }

@@ -98,8 +98,7 @@ std::filesystem::path promptsDir(const ReasoningConfig& cfg) {
 }
 
 std::shared_ptr<Reasoner> makeReasoner(const ReasoningConfig& cfg, std::shared_ptr<const CommonsensePriors> priors) {
-  if (cfg.reasoner == "builtin") return std::make_shared<BuiltinReasoner>(std::move(priors), cfg.min_chance_ratio,
-                                                                          cfg.min_chance_gap);
+  if (cfg.reasoner == "builtin") return std::make_shared<BuiltinReasoner>(std::move(priors), chanceRule(cfg));
   if (cfg.reasoner == "llm") return std::make_shared<LlmReasoner>(cfg, std::move(priors));
   if (cfg.reasoner == "oracle" || cfg.reasoner == "oracle-labels")
     throw InputError("config", "reasoning.reasoner",

@@ -125,7 +125,7 @@ TEST(RegionOracle, OracleLabelsNameEachRegionsTrueRoomTypeAsSurelyAsItsEvidence)
   World w = corridorOfRooms();
   w.rooms[0].type = "kitchen", w.rooms[1].type = "corridor", w.rooms[2].type = "bedroom", w.rooms[3].type = "attic";
   const auto builtin = std::make_shared<BuiltinReasoner>(priors());
-  OracleReasoner oracle(w, {3}, builtin, BuiltinReasoner::kMinChanceRatio, OracleReasoner::Knows::RoomTypes);
+  OracleReasoner oracle(w, {3}, builtin, ChanceRule{}, OracleReasoner::Knows::RoomTypes);
   EXPECT_EQ(oracle.name(), "oracle-labels");
   oracle.setScene({summary(1, 2, 2), summary(2, 6, 2), summary(3, 10, 2), summary(4, 2, 6), summary(5, 20, 2)});
   CoarseQuery q;

@@ -122,7 +122,7 @@ TEST(BuiltinReasoner, KeepsTheRegionItChoseUnlessAnotherIsClearlyBetter) {
   // Two bare regions, equal chance: the best target of region 5 is worth 100/10, of region 6
   // 110/10. The UAV stands in neither (current region 4, nothing left there). The commitment
   // rule alone (min_chance_ratio 0: see ChanceDecidesOnlyWhenItStandsOut).
-  BuiltinReasoner R(priors(), 0.0);
+  BuiltinReasoner R(priors(), ChanceRule{0.0, 0.0});
   CoarseQuery q;
   q.instruction = interpretInstruction("bed", *priors());
   q.regions = {state(4, {}, 0), state(5, {}, 3, 100, 10), state(6, {}, 3, 110, 10)};
@@ -143,8 +143,8 @@ TEST(BuiltinReasoner, ChanceDecidesOnlyWhenItStandsOut) {
   q.regions = {state(4, {}, 0), state(5, {}, 3, 100, 10), state(6, {}, 3, 60, 10)};
   q.current_region = 4;
   auto choose = [&](double s5, double s6, double ratio, double gap = 0.0) {
-    return chooseByChance(q, [&](const RegionState& r) { return r.id == 5 ? s5 : r.id == 6 ? s6 : 0.0; }, ratio,
-                          gap);
+    return chooseByChance(q, [&](const RegionState& r) { return r.id == 5 ? s5 : r.id == 6 ? s6 : 0.0; },
+                          ChanceRule{ratio, gap});
   };
   // Twice the chance: region 6 is worth (0.40 + 0.02) * 6 = 2.52 against (0.20 + 0.02) * 10 = 2.2.
   EXPECT_EQ(choose(0.20, 0.40, 1.5).region, 6);

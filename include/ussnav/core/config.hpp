@@ -411,7 +411,7 @@ struct ReasoningConfig {
   int label_queue = 16;               // pending region-label requests; older ones are dropped
   double decision_min_interval_s = 0.0;  // coarse decisions at most this often; 0 = every re-plan
   // builtin/oracle: act on a region's chance only when it is at least this many times the
-  // chance of the global-utility region (BuiltinReasoner::kMinChanceRatio); 0 = always
+  // chance of the global-utility region (ChanceRule, reasoning/builtin_reasoner.hpp); 0 = always
   double min_chance_ratio = 1.5;
   // ... and at least this much higher (chances near the floor differ by noise: 0.09 against
   // 0.06 for a bed in two regions with nothing of a bedroom in sight); 0 = the ratio alone

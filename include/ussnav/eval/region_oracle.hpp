@@ -35,11 +35,9 @@ class OracleReasoner : public Reasoner {
 
   // `goal_rooms`: ids of the world's rooms that hold a goal instance; `builtin` names regions
   // (and gives the chance, with RoomTypes). `world` must outlive the reasoner (the episode's
-  // simulator holds it). `min_chance_ratio`, `min_chance_gap`: chooseByChance's
-  // (reasoning.min_chance_ratio, reasoning.min_chance_gap).
+  // simulator holds it). `rule`: chooseByChance's.
   OracleReasoner(const World& world, std::set<int> goal_rooms, std::shared_ptr<BuiltinReasoner> builtin,
-                 double min_chance_ratio = BuiltinReasoner::kMinChanceRatio, Knows knows = Knows::GoalRooms,
-                 double min_chance_gap = BuiltinReasoner::kMinChanceGap);
+                 ChanceRule rule = {}, Knows knows = Knows::GoalRooms);
   std::string name() const override { return knows_ == Knows::GoalRooms ? "oracle" : "oracle-labels"; }
   RegionSemantics labelRegion(const RegionSummary& region) override { return builtin_->labelRegion(region); }
   CoarseDecision chooseRegion(const CoarseQuery& query) override;
@@ -57,7 +55,7 @@ class OracleReasoner : public Reasoner {
   const World& world_;
   std::set<int> goal_rooms_, next_to_goal_;
   std::shared_ptr<BuiltinReasoner> builtin_;
-  double min_chance_ratio_, min_chance_gap_;
+  ChanceRule rule_;
   Knows knows_;
   mutable std::mutex mutex_;
   std::map<int, int> room_of_region_;  // region id -> room id, -1 outside every room

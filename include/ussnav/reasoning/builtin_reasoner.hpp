@@ -23,8 +23,9 @@
 //  - semantics too weak to act on (paper Sec. V-B: "the system reverts to a global utility
 //    maximization strategy"): unless that choice's chance is at least min_chance_ratio (1.5)
 //    times, and min_chance_gap (0.1) more than, the chance of the region holding the best
-//    gain / cost target, that region is chosen instead (CoarseDecision::global_utility), so bare or alike regions are explored as the
-//    frontier planner would, commitment bonus and all chance noise aside.
+//    gain / cost target (ChanceRule), that region is chosen instead
+//    (CoarseDecision::global_utility), so bare or alike regions are explored as the frontier
+//    planner would, commitment bonus and all chance noise aside.
 
 #include <functional>
 #include <memory>
@@ -33,13 +34,21 @@
 
 namespace ussnav {
 
+// When a region's chance stands out enough to act on: at least min_ratio times, and min_gap
+// more than, the chance of the best gain / cost target's region (reasoning.min_chance_ratio,
+// reasoning.min_chance_gap). min_ratio 0: always.
+struct ChanceRule {
+  double min_ratio = 1.5;
+  double min_gap = 0.1;
+  bool standsOut(double chance, double global_chance) const {
+    return min_ratio <= 0.0 || (chance >= min_ratio * global_chance && chance - global_chance >= min_gap);
+  }
+};
+inline ChanceRule chanceRule(const ReasoningConfig& cfg) { return {cfg.min_chance_ratio, cfg.min_chance_gap}; }
+
 class BuiltinReasoner : public Reasoner {
  public:
-  static constexpr double kMinChanceRatio = 1.5;  // reasoning.min_chance_ratio's default
-  static constexpr double kMinChanceGap = 0.1;    // reasoning.min_chance_gap's default
-
-  explicit BuiltinReasoner(std::shared_ptr<const CommonsensePriors> priors, double min_chance_ratio = kMinChanceRatio,
-                           double min_chance_gap = kMinChanceGap);
+  explicit BuiltinReasoner(std::shared_ptr<const CommonsensePriors> priors, ChanceRule rule = {});
   std::string name() const override { return "builtin"; }
   RegionSemantics labelRegion(const RegionSummary& region) override;
   CoarseDecision chooseRegion(const CoarseQuery& query) override;
@@ -63,17 +72,15 @@ class BuiltinReasoner : public Reasoner {
 
  private:
   std::shared_ptr<const CommonsensePriors> priors_;
-  double min_chance_ratio_, min_chance_gap_;
+  ChanceRule rule_;
   int hallway_ = -1;  // the priors' "hallway" room type, -1 when they have none
 };
 
 // The decision rule above with any chance function s(region): max (s + 0.02) * best_utility,
-// the committed region x 1.2, then the global-utility region unless the choice's s is at least
-// min_chance_ratio times its s and min_chance_gap more (ratio 0: never); fault "no_frontiers" when no region has a reachable
-// target. Shared with the evaluation's oracle (eval/region_oracle.hpp), so the two differ only in s.
+// the committed region x 1.2, then the global-utility region unless the choice's s stands out
+// (`rule`); fault "no_frontiers" when no region has a reachable target. Shared with the evaluation's oracle (eval/region_oracle.hpp), so the two differ only in s.
 CoarseDecision chooseByChance(const CoarseQuery& q, const std::function<double(const RegionState&)>& chance,
-                              double min_chance_ratio = BuiltinReasoner::kMinChanceRatio,
-                              double min_chance_gap = BuiltinReasoner::kMinChanceGap);
+                              ChanceRule rule = {});
 // s = (1 - f) s_self + f s_next with f = 0.5 * frontier gain / gain (s_self without frontiers).
 double blendChance(const RegionState& r, double s_self, double s_next);
 
