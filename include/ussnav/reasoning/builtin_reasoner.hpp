@@ -78,7 +78,8 @@ class BuiltinReasoner : public Reasoner {
 
 // The decision rule above with any chance function s(region): max (s + 0.02) * best_utility,
 // the committed region x 1.2, then the global-utility region unless the choice's s stands out
-// (`rule`); fault "no_frontiers" when no region has a reachable target. Shared with the evaluation's oracle (eval/region_oracle.hpp), so the two differ only in s.
+// (`rule`); fault "no_frontiers" when no region has a reachable target. Shared with the
+// evaluation's oracle (eval/region_oracle.hpp), so the two differ only in s.
 CoarseDecision chooseByChance(const CoarseQuery& q, const std::function<double(const RegionState&)>& chance,
                               ChanceRule rule = {});
 // s = (1 - f) s_self + f s_next with f = 0.5 * frontier gain / gain (s_self without frontiers).
