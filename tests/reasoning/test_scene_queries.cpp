@@ -84,10 +84,14 @@ TEST(SceneQueries, RequestPicksTheRegionThatServesIt) {
 TEST(SceneQueries, ObjectsOutsideTheSpaceARegionReachesAreSeenBeyondIt) {
   SceneGraph g = twoRoomGraph();
   // A bed seen from the door node of room A (node 3) lies 3.5 m away, past every node of A
-  // (radius 1.6 + kReachMargin): evidence about the room beyond, not about A. A sink next to
+  // (radius 1.6 + kReachMargin, 1 m): evidence about the room beyond, not about A. A sink next to
   // node 2 is A's own.
   g.objects.push_back(object(5, "bed", Vec3(8.5, 2.5, 0.3), 3));
   g.objects.push_back(object(6, "sink", Vec3(4.0, 2.9, 0.8), 2));
+  // A counter against A's far wall, 0.8 m past the reach of node 7 (the UAV has not flown up to
+  // it): A's own. On the suites' worlds, objects seen from their own room lay within a node's
+  // reach + 1 m; those seen through a door mostly further.
+  g.objects.push_back(object(7, "kitchen counter", Vec3(4.3, 5.9, 0.45), 7));
   const auto s = summarizeRegions(g);
   ASSERT_EQ(s.size(), 2u);
   auto has = [](const std::vector<ObjectBrief>& v, int id) {
@@ -96,6 +100,7 @@ TEST(SceneQueries, ObjectsOutsideTheSpaceARegionReachesAreSeenBeyondIt) {
   EXPECT_TRUE(has(s[0].beyond, 5));
   EXPECT_FALSE(has(s[0].objects, 5));
   EXPECT_TRUE(has(s[0].objects, 6));
+  EXPECT_TRUE(has(s[0].objects, 7));
   EXPECT_TRUE(has(s[0].objects, 1));  // the fridge in A's corner, 2.3 m from nodes 0 and 1
   EXPECT_TRUE(has(s[0].objects, 2));  // the stove, 0.8 m from node 7
   EXPECT_FALSE(has(s[1].objects, 5));
