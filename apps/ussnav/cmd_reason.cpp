@@ -3,6 +3,7 @@
 // there in the simulator along the graph, without exploring; ask answers a question from the
 // graph (regions, objects, layout). Region labels the graph lacks come from the reasoner.
 
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <sstream>
@@ -31,7 +32,7 @@ Vec3 parsePoint(const std::string& s, const std::string& option) {
     try {
       size_t used = 0;
       v.push_back(std::stod(item, &used));
-      if (used != item.size()) throw std::invalid_argument(item);
+      if (used != item.size() || !std::isfinite(v.back())) throw std::invalid_argument(item);
     } catch (const std::exception&) {
       throw InputError(option, "", "'" + s + "' is not a point; expected x,y or x,y,z in metres");
     }

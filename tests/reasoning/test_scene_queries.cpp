@@ -169,4 +169,7 @@ TEST(SceneQueriesCli, GotoFliesToTheMeetingRoomAndAskAnswers) {
   EXPECT_NE(out.find("no regions"), std::string::npos) << out;
   EXPECT_NE(test::runCommand(base + "ask --graph " + (dir / "sg.json").string() + " --question x --at 1,b", &out), 0);
   EXPECT_NE(out.find("--at"), std::string::npos) << out;
+  out.clear();
+  EXPECT_NE(test::runCommand(base + "ask --graph " + (dir / "sg.json").string() + " --question x --at nan,1,1", &out), 0);
+  EXPECT_NE(out.find("--at"), std::string::npos) << out;
 }
