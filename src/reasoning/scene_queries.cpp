@@ -81,15 +81,16 @@ RegionPick pickRegionForRequest(const SceneGraph& g, const Instruction& ins, con
     const bool room_ok = want_room >= 0 && it != sem.end() && priors.roomIndex(it->second.label) == want_room;
     // A matching object in the region.
     double obj_best = 0.0;
+    std::string obj_label;
     for (const auto* list : {&s.objects, &s.beyond})  // beyond: seen from it, reached through it
       for (const ObjectBrief& o : *list)
         for (const auto& t : ins.targets) {
           const double c = priors.encoder().similarity(o.label, t);
-          if (c >= goal_similarity && c > obj_best) obj_best = c, p.object = o.id, p.goal = o.position;
+          if (c >= goal_similarity && c > obj_best) obj_best = c, p.object = o.id, p.goal = o.position, obj_label = o.label;
         }
     if (p.object >= 0 && (ins.room.empty() || room_ok)) {
       p.score = 1.0 + (room_ok ? 0.5 : 0.0);
-      p.reason = "holds " + std::to_string(p.object) + " matching \"" + ins.text + "\"";
+      p.reason = "holds object " + std::to_string(p.object) + " (" + obj_label + ") matching \"" + ins.text + "\"";
     } else {
       RegionState st;
       st.id = s.id;
