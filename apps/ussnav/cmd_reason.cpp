@@ -91,9 +91,10 @@ void runGoto(const ReasonArgs& a) {
   const RouteFlight fl = flyRoute(sim, c.cfg, start, path);
   const int reached_region = regionAt(c.graph, fl.final_pose.position);
   const bool ok = fl.arrived && fl.collisions == 0;
-  std::printf("  flew %.1f m in %.0f s along %zu graph waypoints (%d flight paths): %s, now in region %d, %d collisions\n",
-              fl.path_length_m, fl.time_s, path.size(), fl.legs, ok ? "ARRIVED" : ("STOPPED (" + fl.end_reason + ")").c_str(),
-              reached_region, fl.collisions);
+  std::printf("  flew %.1f m in %.0f s along %zu graph waypoint%s (%d flight path%s): %s, now in region %d, %d collision%s\n",
+              fl.path_length_m, fl.time_s, path.size(), path.size() == 1 ? "" : "s", fl.legs, fl.legs == 1 ? "" : "s",
+              ok ? "ARRIVED" : ("STOPPED (" + fl.end_reason + ")").c_str(), reached_region, fl.collisions,
+              fl.collisions == 1 ? "" : "s");
   if (fl.end_shift_m > 0.0)
     std::printf("  the goal point lay inside the clearance margin: stopped %.1f m short of it\n", fl.end_shift_m);
   if (!a.out.empty()) {

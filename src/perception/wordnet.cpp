@@ -357,6 +357,29 @@ std::optional<Sense> lookupNoun(const std::string& word) {
   return withDb([&](Db& db) { return lookupNounLocked(db, word); }, std::optional<Sense>{});
 }
 
+bool knownAsVerb(const std::string& word) {
+  const std::string w = lower(word);
+  if (w.empty() || w.size() >= WORDBUF - 1 || w.find(' ') != std::string::npos) return false;
+  return withDb(
+      [&](Db&) {
+        const auto indexed = [](const std::string& v) {
+          std::vector<char> buf(v.begin(), v.end());
+          buf.push_back('\0');
+          IndexPtr idx = index_lookup(buf.data(), VERB);
+          if (!idx) return false;
+          free_index(idx);
+          return true;
+        };
+        if (indexed(w)) return true;
+        std::vector<char> buf(w.begin(), w.end());
+        buf.push_back('\0');
+        for (char* m = morphstr(buf.data(), VERB); m; m = morphstr(nullptr, VERB))
+          if (indexed(m)) return true;
+        return false;
+      },
+      false);
+}
+
 bool namesAnimal(const std::string& word) {
   return withDb(
       [&](Db& db) {

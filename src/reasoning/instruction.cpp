@@ -21,8 +21,15 @@ const std::set<std::string>& fillers() {
       "we",    "you",   "it",   "that", "which",  "near", "nearest",  "closest",  "show",   "take", "bring",
       "search", "locate", "fly", "navigate", "this", "these", "those", "one", "from", "into", "by", "up",
       "do",    "does",  "have", "has",  "am",     "where's", "whats", "what", "your", "our", "their", "his",
-      "her",   "its",   "go", "head", "towards", "toward", "object", "thing", "area", "spot", "room"};
+      "her",   "its",   "go", "head", "towards", "toward", "object", "thing", "area", "spot", "room", "use", "using"};
   return f;
+}
+
+// Words after which a verb stands: "to print", "I wash", "can eat", "please watch", "let's eat".
+const std::set<std::string>& verbCues() {
+  static const std::set<std::string> c{"to",   "i",     "we",    "you",  "can",  "could", "please", "lets", "let's",
+                                       "i'd",  "i'll",  "we'd",  "must", "will", "shall", "should", "let"};
+  return c;
 }
 
 bool physicalLexfile(const std::string& lf) {
@@ -72,11 +79,14 @@ std::vector<std::string> instructionWords(const std::string& text) {
 
 std::string stemWord(const std::string& w) {
   auto ends = [&](const std::string& s) { return w.size() > s.size() + 2 && w.compare(w.size() - s.size(), s.size(), s) == 0; };
-  if (ends("ing")) return w.substr(0, w.size() - 3);
-  if (ends("ed")) return w.substr(0, w.size() - 2);
-  if (ends("es") && !ends("ses")) return w.substr(0, w.size() - 1);
-  if (ends("s") && !ends("ss")) return w.substr(0, w.size() - 1);
-  return w;
+  std::string s = w;
+  if (ends("ing")) s = w.substr(0, w.size() - 3);
+  else if (ends("ed")) s = w.substr(0, w.size() - 2);
+  else if (ends("es") && !ends("ses")) s = w.substr(0, w.size() - 1);
+  else if (ends("s") && !ends("ss")) s = w.substr(0, w.size() - 1);
+  // A final silent e goes on both sides: "store" and "stored", "bake" and "baking" meet.
+  if (s.size() > 3 && s.back() == 'e' && s[s.size() - 2] != 'e') s.pop_back();
+  return s;
 }
 
 Instruction interpretInstruction(const std::string& text, const CommonsensePriors& P,
@@ -95,9 +105,20 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
       words.erase(words.begin() + long(i), words.begin() + long(i + n));
       break;
     }
+  // Content words, and which of them stand as verbs: a word WordNet knows as a verb after "to",
+  // "I", "can", ... ("somewhere to wash", "where can I store food"), or first and followed by
+  // another content word ("watch tv"). WordNet also has a print, a watch, a wash and a store
+  // among its artifacts; a verb names what to do, not what to look for.
   std::vector<std::string> content;
-  for (const auto& w : words)
-    if (!fillers().count(w)) content.push_back(w);
+  std::vector<bool> verb;
+  for (size_t i = 0; i < words.size(); ++i) {
+    if (fillers().count(words[i])) continue;
+    const bool cued = i > 0 && verbCues().count(words[i - 1]);
+    const bool leads = content.empty() && i == 0 &&
+                       std::any_of(words.begin() + 1, words.end(), [](const std::string& x) { return !fillers().count(x); });
+    content.push_back(words[i]);
+    verb.push_back((cued || leads) && wordnet::knownAsVerb(words[i]));
+  }
   if (content.empty()) {
     if (!I.room.empty()) {
       I.how = "room_only";
@@ -106,30 +127,42 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
     throw InputError("goal", "", "'" + text + "' names nothing to look for; expected an object or a request");
   }
 
-  // 2. A named object: the longest n-gram of content words that is a physical thing.
+  // 2. A named object: the longest n-gram of content words that is a physical thing; one with a
+  // verb in it only when WordNet knows the whole n-gram ("washing machine", "dining table").
   const TextEncoder& enc = P.encoder();
-  for (size_t n = std::min<size_t>(3, content.size()); n >= 1 && I.targets.empty(); --n)
+  std::string named;
+  for (size_t n = std::min<size_t>(3, content.size()); n >= 1 && named.empty(); --n)
     for (size_t i = 0; i + n <= content.size(); ++i) {
       const std::string phrase = joinWords(content, i, i + n);
+      const bool has_verb = std::any_of(verb.begin() + long(i), verb.begin() + long(i + n), [](bool v) { return v; });
+      if (has_verb && (n < 2 || !wordnet::lookupNoun(phrase))) continue;
       const auto sense = wordnet::lookupNoun(phrase);
-      bool named = sense && physicalLexfile(sense->lexfile);
-      if (!named)
+      bool is_named = sense && physicalLexfile(sense->lexfile);
+      if (!is_named)
         for (const auto& c : P.categories())
           if (enc.similarity(phrase, c) >= 0.9) {
-            named = true;
+            is_named = true;
             break;
           }
-      if (named) {
-        I.targets.push_back(phrase);
-        I.how = "named";
+      if (is_named) {
+        named = phrase;
+        std::fill(verb.begin() + long(i), verb.begin() + long(i + n), false);  // "washing" machine
         break;
       }
     }
-  if (!I.targets.empty()) return I;
+  const bool any_verb = std::find(verb.begin(), verb.end(), true) != verb.end();
+  if (!named.empty() && !any_verb) {
+    I.targets.push_back(named);
+    I.how = "named";
+    return I;
+  }
 
   // 3. A functional request: content words against names, synonyms and glosses.
-  std::set<std::string> want;
-  for (const auto& w : content) want.insert(stemWord(w));
+  std::set<std::string> want, verbs;
+  for (size_t i = 0; i < content.size(); ++i) {
+    want.insert(stemWord(content[i]));
+    if (verb[i]) verbs.insert(stemWord(content[i]));
+  }
   auto score = [&](const std::string& name, const std::string& extra_text) {
     const std::set<std::string> name_words = stems(name + " " + [&] {
       std::string s;
@@ -137,15 +170,25 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
       return s;
     }());
     const std::string gloss = wordnet::glossOf(name) + " " + extra_text;
-    const std::set<std::string> gloss_words = stems(gloss);
-    // A purpose ("a place TO SLEEP", "used FOR SLEEPING") says more than a mention.
-    std::set<std::string> purposes;
+    const std::set<std::string> gloss_words = stems(gloss), extra_words = stems(extra_text);
+    // A purpose ("a place TO SLEEP", "used FOR SLEEPING") says more than a mention. A verb of
+    // the request counts in a WordNet gloss only where the gloss uses it as a verb: a purpose,
+    // an -ing / -ed form, after "can" ("where several people can SIT"). A book is "a written
+    // work", not somewhere to work. (Our own room descriptions are written as purposes throughout.)
+    std::set<std::string> purposes, verb_forms;
     const auto g = instructionWords(gloss);
-    for (size_t i = 0; i + 1 < g.size(); ++i)
-      if (g[i] == "to" || g[i] == "for") purposes.insert(stemWord(g[i + 1]));
+    for (size_t i = 0; i < g.size(); ++i) {
+      if (i + 1 < g.size() && (g[i] == "to" || g[i] == "for")) purposes.insert(stemWord(g[i + 1]));
+      if (stemWord(g[i]).size() + 2 <= g[i].size()) verb_forms.insert(stemWord(g[i]));  // -ing, -ed
+      if (i + 1 < g.size() && (g[i] == "can" || g[i] == "could" || g[i] == "may" || g[i] == "will"))
+        verb_forms.insert(stemWord(g[i + 1]));  // "where several people can SIT"
+    }
     double s = 0.0;
     for (const auto& w : want)
-      s += name_words.count(w) ? 2.0 : gloss_words.count(w) ? (purposes.count(w) ? 1.5 : 1.0) : 0.0;
+      s += name_words.count(w) ? 2.0
+           : purposes.count(w) ? 1.5
+           : extra_words.count(w) || (gloss_words.count(w) && (!verbs.count(w) || verb_forms.count(w))) ? 1.0
+                                : 0.0;
     // A compound known only by its head noun ("dog bed" -> bed) ranks after the head itself.
     if (const auto r = wordnet::resolveLabel(name); r && !r->modifiers.empty()) s *= 0.9;
     return s;
@@ -156,13 +199,25 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   std::vector<std::pair<double, std::string>> scored;
   for (const auto& v : vocab)
     if (const double s = score(v, ""); s > 0.0) scored.push_back({s, v});
-  std::stable_sort(scored.begin(), scored.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  // Best first; among equals the shorter name ("shower" before "shower curtain").
+  const auto words_in = [](const std::string& x) { return std::count(x.begin(), x.end(), ' '); };
+  std::stable_sort(scored.begin(), scored.end(), [&](const auto& a, const auto& b) {
+    return a.first != b.first ? a.first > b.first : words_in(a.second) < words_in(b.second);
+  });
   double best_room = 0.0;
   for (const RoomType& r : P.rooms()) {
     std::string aliases;
     for (const auto& a : r.aliases) aliases += a + " ";
     const double s = score(r.name, r.description + " " + aliases);
     if (s > best_room) best_room = s, I.room_hint = r.name;
+  }
+  // With a verb, the object named stays the target unless a category answers the verb and the
+  // object together better than the object's own name ("wash clothes" -> washing machine, "a
+  // home appliance for washing clothes"; "read a book" -> book; "watch tv" -> tv).
+  if (!named.empty() && (scored.empty() || scored.front().first <= score(named, ""))) {
+    I.targets.push_back(named);
+    I.how = "named";
+    return I;
   }
   for (const auto& [s, v] : scored) {
     if (s < scored.front().first || I.targets.size() >= 3) break;

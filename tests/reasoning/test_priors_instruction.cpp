@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "ussnav/core/error.hpp"
+#include "ussnav/perception/wordnet.hpp"
 #include "ussnav/reasoning/instruction.hpp"
 #include "ussnav/reasoning/priors.hpp"
 
@@ -205,6 +206,45 @@ TEST(Instruction, FunctionalRequestsFindTheirCategoriesThroughGlosses) {
   EXPECT_TRUE(contains(M.targets, "conference table"));
   EXPECT_FALSE(contains(M.targets, "bed"));
   EXPECT_EQ(M.room_hint, "meeting room");
+}
+
+TEST(Instruction, AVerbNamesWhatToDoNotWhatToLookFor) {
+  // WordNet has a watch, a print, a wash and a store among its artifacts, and the text encoder
+  // puts "use toilet" and "read book" within 0.9 of toilet and book: before verbs were told
+  // apart, "watch tv" looked for a wristwatch and "I need to use the toilet" for a "use toilet".
+  const auto& P = *priors();
+  const auto targets = [&](const char* text) { return interpretInstruction(text, P).targets; };
+  using V = std::vector<std::string>;
+  EXPECT_EQ(targets("watch tv"), V{"tv"});
+  EXPECT_EQ(targets("I want to watch tv"), V{"tv"});
+  EXPECT_EQ(targets("I need to use the toilet"), V{"toilet"});
+  EXPECT_EQ(targets("I want to read a book"), V{"book"});
+  EXPECT_EQ(targets("I want to sit on the sofa"), V{"sofa"});
+  // The verb and the object together name another category better than the object alone.
+  const Instruction W = interpretInstruction("I need to wash clothes", P);
+  EXPECT_EQ(W.how, "functional");
+  EXPECT_TRUE(contains(W.targets, "washing machine"));
+  EXPECT_FALSE(contains(W.targets, "clothes"));
+  // A verb counts in a gloss only where the gloss uses it as one: a book is "a written work",
+  // not somewhere to work; an office is "a room where ... work is done".
+  const Instruction Q = interpretInstruction("a quiet place to work", P);
+  EXPECT_FALSE(contains(Q.targets, "book"));
+  EXPECT_EQ(Q.room_hint, "office");
+  EXPECT_FALSE(contains(targets("where can I store food"), "store"));
+  // Seating is "an area ... where several people can sit".
+  EXPECT_TRUE(contains(targets("somewhere to sit"), "seating"));
+  // Among equally good categories the plainest comes first.
+  EXPECT_EQ(targets("somewhere to shower").at(0), "shower");
+  // A WordNet compound that starts with a verb form is still a named object.
+  for (const char* text : {"washing machine", "dining table", "a dining table"}) {
+    const Instruction N = interpretInstruction(text, P);
+    EXPECT_EQ(N.how, "named") << text;
+    EXPECT_EQ(N.targets.size(), 1u) << text;
+    EXPECT_TRUE(N.room_hint.empty()) << text;
+  }
+  EXPECT_TRUE(wordnet::knownAsVerb("prints"));
+  EXPECT_TRUE(wordnet::knownAsVerb("watching"));
+  EXPECT_FALSE(wordnet::knownAsVerb("sofa"));
 }
 
 TEST(Instruction, UnknownWordsAreKeptLiterallyAndEmptyIsRejected) {

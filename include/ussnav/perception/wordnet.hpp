@@ -47,6 +47,9 @@ bool reopen(const std::filesystem::path& dir);
 // ("kitchen"), (4) anything else. Senses that are only a proper name ("Monitor", a ship) come
 // last. nullopt when the word is not a WordNet noun.
 std::optional<Sense> lookupNoun(const std::string& word);
+// True when WordNet knows the single word as a verb, after verb morphology ("prints",
+// "watching", "ate" -> print, watch, eat). Instructions use it to tell "to print" from a print.
+bool knownAsVerb(const std::string& word);
 // True when the word's most frequent noun sense is an animal ("dog", "cats", "pet"; not "guest"
 // or "office"), whatever sense lookupNoun() prefers indoors (it reads "dog" as an andiron).
 bool namesAnimal(const std::string& word);

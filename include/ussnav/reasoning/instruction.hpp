@@ -6,6 +6,9 @@
 //     the room constraint;
 //  2. a named object: the longest word n-gram that WordNet knows as a physical thing (artifact,
 //     plant, object, food) or that matches a category of the priors by text cosine -> targets;
+//     a verb ("watch" tv, "to use" the toilet) starts none unless the n-gram is a WordNet noun,
+//     and with a verb present step 3 may name a category that fits verb and object better
+//     ("wash clothes" -> washing machine);
 //  3. otherwise a functional request: the content words (stemmed, filler words dropped) are
 //     looked up in each candidate category's name, synonyms and WordNet gloss ("bed: a piece of
 //     furniture that provides a place to sleep": 2 for a name, 1.5 for a purpose "to / for W",
