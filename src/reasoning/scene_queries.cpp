@@ -3,6 +3,7 @@
 #include "ussnav/reasoning/scene_queries.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <functional>
 #include <queue>
@@ -37,6 +38,11 @@ int nearestNode(const SceneGraph& g, const Vec3& p, const std::set<int>* among =
     if (best < 0 || d < bd) best = int(i), bd = d;
   }
   return best;
+}
+
+std::string capitalised(std::string s) {
+  if (!s.empty()) s[0] = char(std::toupper(static_cast<unsigned char>(s[0])));
+  return s;
 }
 
 }  // namespace
@@ -157,9 +163,9 @@ std::string answerQuestion(const SceneGraph& g, const std::string& question, con
     return false;
   };
   std::ostringstream out;
-  auto describe = [&](const RegionSummary& s) {
+  auto describe = [&](const RegionSummary& s, const std::string& lead) {
     const auto it = sem.find(s.id);
-    out << "You are in " << regionName(s.id, sem) << ". ";
+    out << lead << (lead.empty() ? capitalised(regionName(s.id, sem)) : regionName(s.id, sem)) << ". ";
     if (it != sem.end() && !it->second.description.empty()) out << it->second.description << " ";
     if (!s.objects.empty()) {
       out << "Objects here: ";
@@ -198,13 +204,31 @@ std::string answerQuestion(const SceneGraph& g, const std::string& question, con
     } catch (const std::exception&) {
     }
   }
+  // "What is in the kitchen?", "Describe the bedroom": the regions labelled with the room named.
+  if (!has({"layout", "rooms", "regions", "building", "map", "overview"})) {
+    std::string room;
+    try {
+      room = interpretInstruction(question, priors, graphVocabulary(g)).room;
+    } catch (const std::exception&) {
+    }
+    if (const int want = priors.roomIndex(room); want >= 0) {
+      int n = 0;
+      for (const RegionSummary& s : summaries)
+        if (const auto it = sem.find(s.id); it != sem.end() && priors.roomIndex(it->second.label) == want) {
+          if (n++) out << " ";
+          describe(s, "");
+        }
+      if (n == 0) out << "No region is labelled " << room << " yet; the map has " << summaries.size() << " regions.";
+      return out.str();
+    }
+  }
   if (has({"layout", "rooms", "regions", "building", "map", "overview"}) || !at) {
     out << "The map has " << summaries.size() << " regions and " << g.objects.size() << " objects.";
     for (const RegionSummary& s : summaries) {
-      out << " " << regionName(s.id, sem) << ": " << s.objects.size() << (s.objects.size() == 1 ? " object" : " objects");
+      out << " " << capitalised(regionName(s.id, sem)) << ": " << s.objects.size() << (s.objects.size() == 1 ? " object" : " objects");
       if (!s.adjacent.empty()) {
-        out << ", next to";
-        for (int a : s.adjacent) out << " " << a;
+        out << ", next to ";
+        for (size_t i = 0; i < s.adjacent.size(); ++i) out << (i ? ", " : "") << regionName(s.adjacent[i], sem);
       }
       out << ".";
     }
@@ -212,7 +236,7 @@ std::string answerQuestion(const SceneGraph& g, const std::string& question, con
   }
   const int r = regionAt(g, *at);
   for (const RegionSummary& s : summaries)
-    if (s.id == r) describe(s);
+    if (s.id == r) describe(s, "You are in ");
   if (out.str().empty()) out << "The point " << fmt(*at) << " is in no mapped region.";
   return out.str();
 }

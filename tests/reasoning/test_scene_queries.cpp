@@ -140,6 +140,16 @@ TEST(SceneQueries, AnswersQuestionsFromTheGraph) {
   EXPECT_NE(none.find("No bed"), std::string::npos) << none;
   const std::string layout = answerQuestion(g, "Describe the layout", std::nullopt, sem, *priors());
   EXPECT_NE(layout.find("2 regions and 4 objects"), std::string::npos) << layout;
+  EXPECT_NE(layout.find("next to region 1 ("), std::string::npos) << layout;  // was "next to 1"
+  // A room named in the question: that region, wherever the asker is.
+  const std::string kitchen = answerQuestion(g, "What is in the kitchen?", Vec3(9.0, 1.2, 1.2), sem, *priors());
+  EXPECT_EQ(kitchen.rfind("Region 0 (kitchen).", 0), 0u) << kitchen;
+  EXPECT_NE(kitchen.find("fridge"), std::string::npos) << kitchen;
+  EXPECT_EQ(kitchen.find("conference table"), std::string::npos) << kitchen;
+  const std::string next = answerQuestion(g, "Which room is next to the kitchen?", std::nullopt, sem, *priors());
+  EXPECT_NE(next.find("It connects to region 1"), std::string::npos) << next;
+  const std::string no_room = answerQuestion(g, "Describe the bedroom", std::nullopt, sem, *priors());
+  EXPECT_NE(no_room.find("No region is labelled bedroom yet"), std::string::npos) << no_room;
 }
 
 TEST(SceneQueriesCli, GotoFliesToTheMeetingRoomAndAskAnswers) {

@@ -7,7 +7,8 @@
 //  - routeOnSceneGraph: a polyline from a point to another over the graph's nodes and edges
 //    (Dijkstra on centroid distances; start and goal join their nearest nodes);
 //  - answerQuestion: a short text answer about the graph: the area at a point ("describe the
-//    current area"), where objects of a kind are ("where is the bed?"), or the layout.
+//    current area"), where objects of a kind are ("where is the bed?"), the regions labelled
+//    with a room type the question names ("what is in the kitchen?"), or the layout.
 // Only the scene graph is read, never ground truth.
 
 #include <map>
