@@ -183,6 +183,28 @@ std::string answerQuestion(const SceneGraph& g, const std::string& question, con
       out << ".";
     }
   };
+  // "List all objects", "what objects are there?": every label with its count, most first.
+  std::string room_named;  // "in the kitchen"
+  try {
+    room_named = interpretInstruction(question, priors, graphVocabulary(g)).room;
+  } catch (const std::exception&) {
+  }
+  if (has({"objects", "things", "list", "inventory", "everything"}) && !has({"here", "current", "layout", "map"}) &&
+      room_named.empty()) {
+    std::map<std::string, int> count;
+    for (const SgObject& o : g.objects) ++count[o.label];
+    std::vector<std::pair<int, std::string>> by;
+    for (const auto& [l, c] : count) by.push_back({c, l});
+    std::stable_sort(by.begin(), by.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    out << "The map holds " << g.objects.size() << (g.objects.size() == 1 ? " object" : " objects") << " in "
+        << summaries.size() << (summaries.size() == 1 ? " region" : " regions") << (by.empty() ? "." : ": ");
+    for (size_t i = 0; i < by.size(); ++i) {
+      const std::string& l = by[i].second;
+      out << (i ? ", " : "") << by[i].first << " " << l << (by[i].first > 1 && l.back() != 's' ? "s" : "");
+    }
+    if (!by.empty()) out << ".";
+    return out.str();
+  }
   // "Where is / is there / find X": objects matching X.
   if (has({"where", "there", "find", "any", "how"}) && !has({"layout", "rooms", "regions", "am"})) {
     try {
@@ -206,11 +228,7 @@ std::string answerQuestion(const SceneGraph& g, const std::string& question, con
   }
   // "What is in the kitchen?", "Describe the bedroom": the regions labelled with the room named.
   if (!has({"layout", "rooms", "regions", "building", "map", "overview"})) {
-    std::string room;
-    try {
-      room = interpretInstruction(question, priors, graphVocabulary(g)).room;
-    } catch (const std::exception&) {
-    }
+    const std::string& room = room_named;
     if (const int want = priors.roomIndex(room); want >= 0) {
       int n = 0;
       for (const RegionSummary& s : summaries)

@@ -141,6 +141,11 @@ TEST(SceneQueries, AnswersQuestionsFromTheGraph) {
   const std::string layout = answerQuestion(g, "Describe the layout", std::nullopt, sem, *priors());
   EXPECT_NE(layout.find("2 regions and 4 objects"), std::string::npos) << layout;
   EXPECT_NE(layout.find("next to region 1 ("), std::string::npos) << layout;  // was "next to 1"
+  const std::string all = answerQuestion(g, "List all objects", Vec3(2.0, 2.0, 1.2), sem, *priors());
+  EXPECT_EQ(all.rfind("The map holds 4 objects in 2 regions: ", 0), 0u) << all;
+  for (const SgObject& o : g.objects) EXPECT_NE(all.find("1 " + o.label), std::string::npos) << all;
+  const std::string in_kitchen = answerQuestion(g, "What objects are in the kitchen?", std::nullopt, sem, *priors());
+  EXPECT_EQ(in_kitchen.rfind("Region 0 (kitchen).", 0), 0u) << in_kitchen;
   // A room named in the question: that region, wherever the asker is.
   const std::string kitchen = answerQuestion(g, "What is in the kitchen?", Vec3(9.0, 1.2, 1.2), sem, *priors());
   EXPECT_EQ(kitchen.rfind("Region 0 (kitchen).", 0), 0u) << kitchen;

@@ -8,7 +8,8 @@
 //    (Dijkstra on centroid distances; start and goal join their nearest nodes);
 //  - answerQuestion: a short text answer about the graph: the area at a point ("describe the
 //    current area"), where objects of a kind are ("where is the bed?"), the regions labelled
-//    with a room type the question names ("what is in the kitchen?"), or the layout.
+//    with a room type the question names ("what is in the kitchen?"), every object label with
+//    its count ("list all objects"), or the layout.
 // Only the scene graph is read, never ground truth.
 
 #include <map>
