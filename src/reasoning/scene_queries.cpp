@@ -200,7 +200,7 @@ std::string answerQuestion(const SceneGraph& g, const std::string& question, con
         << summaries.size() << (summaries.size() == 1 ? " region" : " regions") << (by.empty() ? "." : ": ");
     for (size_t i = 0; i < by.size(); ++i) {
       const std::string& l = by[i].second;
-      out << (i ? ", " : "") << by[i].first << " " << l << (by[i].first > 1 && l.back() != 's' ? "s" : "");
+      out << (i ? ", " : "") << by[i].first << " " << l << (by[i].first > 1 && !l.empty() && l.back() != 's' ? "s" : "");
     }
     if (!by.empty()) out << ".";
     return out.str();
