@@ -206,6 +206,9 @@ TEST(Instruction, FunctionalRequestsFindTheirCategoriesThroughGlosses) {
   EXPECT_TRUE(contains(M.targets, "conference table"));
   EXPECT_FALSE(contains(M.targets, "bed"));
   EXPECT_EQ(M.room_hint, "meeting room");
+  // Room descriptions (room_types.tsv) are written as purposes: a kitchen is for cooking.
+  EXPECT_EQ(interpretInstruction("somewhere to cook", *priors()).room_hint, "kitchen");
+  EXPECT_EQ(interpretInstruction("somewhere to eat", *priors()).room_hint, "dining room");
 }
 
 TEST(Instruction, AVerbNamesWhatToDoNotWhatToLookFor) {
