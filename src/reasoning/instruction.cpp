@@ -114,7 +114,7 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   for (size_t i = 0; i < words.size(); ++i) {
     if (fillers().count(words[i])) continue;
     const bool cued = i > 0 && verbCues().count(words[i - 1]);
-    const bool leads = content.empty() && i == 0 &&
+    const bool leads = i == 0 &&
                        std::any_of(words.begin() + 1, words.end(), [](const std::string& x) { return !fillers().count(x); });
     content.push_back(words[i]);
     verb.push_back((cued || leads) && wordnet::knownAsVerb(words[i]));
@@ -179,7 +179,8 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
     const auto g = instructionWords(gloss);
     for (size_t i = 0; i < g.size(); ++i) {
       if (i + 1 < g.size() && (g[i] == "to" || g[i] == "for")) purposes.insert(stemWord(g[i + 1]));
-      if (stemWord(g[i]).size() + 2 <= g[i].size()) verb_forms.insert(stemWord(g[i]));  // -ing, -ed
+      const auto ends = [&](const char* x) { return g[i].size() > 4 && g[i].ends_with(x); };
+      if (ends("ing") || ends("ed")) verb_forms.insert(stemWord(g[i]));
       if (i + 1 < g.size() && (g[i] == "can" || g[i] == "could" || g[i] == "may" || g[i] == "will"))
         verb_forms.insert(stemWord(g[i + 1]));  // "where several people can SIT"
     }
