@@ -142,7 +142,9 @@ void addReasonCommands(CLI::App& root) {
   auto* ask = root.add_subcommand("ask", "Answer a question from a saved scene graph (regions, objects, layout)");
   ask->fallthrough();
   ask->add_option("--graph", q.graph, "scene_graph.json")->required()->check(CLI::ExistingFile);
-  ask->add_option("--question", q.question, "e.g. \"Describe the current area\", \"Where is the bed?\"")->required();
+  ask->add_option("--question", q.question,
+                  "e.g. \"Describe the current area\", \"Where is the bed?\", \"What is in the kitchen?\", \"List all objects\", \"Describe the layout\"")
+      ->required();
   ask->add_option("--at", q.at, "the current position x,y[,z] for questions about \"here\"");
   ask->add_option("--reasoner", q.reasoner, "labels regions the graph lacks: builtin | llm")->check(CLI::IsMember({"builtin", "llm"}));
   ask->callback([] { runAsk(q); });
