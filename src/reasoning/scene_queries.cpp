@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <queue>
 #include <set>
 #include <sstream>
@@ -183,12 +184,15 @@ std::string answerQuestion(const SceneGraph& g, const std::string& question, con
       out << ".";
     }
   };
-  // "List all objects", "what objects are there?": every label with its count, most first.
-  std::string room_named;  // "in the kitchen"
+  // The question read as an instruction: what it looks for, and a room it names ("in the kitchen").
+  std::optional<Instruction> ins;
   try {
-    room_named = interpretInstruction(question, priors, graphVocabulary(g)).room;
-  } catch (const std::exception&) {
+    ins = interpretInstruction(question, priors, graphVocabulary(g));
+  } catch (const std::exception&) {  // nothing to look for ("describe the current area")
   }
+  const std::string room_named = ins ? ins->room : "";
+  const bool about_layout = has({"layout", "rooms", "regions", "building", "map", "overview"});
+  // "List all objects", "what objects are there?": every label with its count, most first.
   if (has({"objects", "things", "list", "inventory", "everything"}) && !has({"here", "current", "layout", "map"}) &&
       room_named.empty()) {
     std::map<std::string, int> count;
@@ -206,41 +210,35 @@ std::string answerQuestion(const SceneGraph& g, const std::string& question, con
     return out.str();
   }
   // "Where is / is there / find X": objects matching X.
-  if (has({"where", "there", "find", "any", "how"}) && !has({"layout", "rooms", "regions", "am"})) {
-    try {
-      const Instruction ins = interpretInstruction(question, priors, graphVocabulary(g));
-      if (!ins.targets.empty() && ins.how != "literal") {
-        int n = 0;
-        for (const RegionSummary& s : summaries)
-          for (const auto* list : {&s.objects, &s.beyond})
-            for (const ObjectBrief& o : *list)
-              for (const auto& t : ins.targets)
-                if (priors.encoder().similarity(o.label, t) >= 0.85) {
-                  out << (n++ ? " " : "") << "A " << o.label << " (object " << o.id << ") is at " << fmt(o.position)
-                      << (list == &s.objects ? " in " : ", seen from ") << regionName(s.id, sem) << ".";
-                  break;
-                }
-        if (n == 0) out << "No " << ins.targets.front() << " has been seen yet.";
-        return out.str();
-      }
-    } catch (const std::exception&) {
-    }
+  if (has({"where", "there", "find", "any", "how"}) && !has({"layout", "rooms", "regions", "am"}) && ins &&
+      !ins->targets.empty() && ins->how != "literal") {
+    int n = 0;
+    for (const RegionSummary& s : summaries)
+      for (const auto* list : {&s.objects, &s.beyond})
+        for (const ObjectBrief& o : *list)
+          for (const auto& t : ins->targets)
+            if (priors.encoder().similarity(o.label, t) >= 0.85) {
+              out << (n++ ? " " : "") << "A " << o.label << " (object " << o.id << ") is at " << fmt(o.position)
+                  << (list == &s.objects ? " in " : ", seen from ") << regionName(s.id, sem) << ".";
+              break;
+            }
+    if (n == 0) out << "No " << ins->targets.front() << " has been seen yet.";
+    return out.str();
   }
   // "What is in the kitchen?", "Describe the bedroom": the regions labelled with the room named.
-  if (!has({"layout", "rooms", "regions", "building", "map", "overview"})) {
-    const std::string& room = room_named;
-    if (const int want = priors.roomIndex(room); want >= 0) {
+  if (!about_layout) {
+    if (const int want = priors.roomIndex(room_named); want >= 0) {
       int n = 0;
       for (const RegionSummary& s : summaries)
         if (const auto it = sem.find(s.id); it != sem.end() && priors.roomIndex(it->second.label) == want) {
           if (n++) out << " ";
           describe(s, "");
         }
-      if (n == 0) out << "No region is labelled " << room << " yet; the map has " << summaries.size() << " regions.";
+      if (n == 0) out << "No region is labelled " << room_named << " yet; the map has " << summaries.size() << " regions.";
       return out.str();
     }
   }
-  if (has({"layout", "rooms", "regions", "building", "map", "overview"}) || !at) {
+  if (about_layout || !at) {
     out << "The map has " << summaries.size() << " regions and " << g.objects.size() << " objects.";
     for (const RegionSummary& s : summaries) {
       out << " " << capitalised(regionName(s.id, sem)) << ": " << s.objects.size() << (s.objects.size() == 1 ? " object" : " objects");

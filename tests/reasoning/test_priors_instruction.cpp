@@ -211,7 +211,7 @@ TEST(Instruction, FunctionalRequestsFindTheirCategoriesThroughGlosses) {
   EXPECT_EQ(interpretInstruction("somewhere to eat", *priors()).room_hint, "dining room");
 }
 
-TEST(Instruction, AVerbNamesWhatToDoNotWhatToLookFor) {
+TEST(Instruction, AVerbIsAnActionNotTheObjectSought) {
   // WordNet has a watch, a print, a wash and a store among its artifacts, and the text encoder
   // puts "use toilet" and "read book" within 0.9 of toilet and book: before verbs were told
   // apart, "watch tv" looked for a wristwatch and "I need to use the toilet" for a "use toilet".

@@ -8,6 +8,9 @@
 
 #include <algorithm>
 #include <fstream>
+#include <functional>
+#include <memory>
+#include <optional>
 
 #include "support/paths.hpp"
 #include "support/test_worlds.hpp"
@@ -58,6 +61,14 @@ SceneGraph twoRoomGraph() {
   g.objects.push_back(object(3, "conference table", Vec3(8.6, 3.0, 0.4)));
   g.objects.push_back(object(4, "chair", Vec3(8.0, 3.2, 0.45)));
   return g;
+}
+
+// answerQuestion on twoRoomGraph(), its regions labelled by the builtin reasoner.
+std::function<std::string(const char*, std::optional<Vec3>)> twoRoomAnswers() {
+  const auto g = std::make_shared<const SceneGraph>(twoRoomGraph());
+  BuiltinReasoner R(priors());
+  const auto sem = std::make_shared<const std::map<int, RegionSemantics>>(graphSemantics(*g, &R));
+  return [g, sem](const char* q, std::optional<Vec3> at) { return answerQuestion(*g, q, at, *sem, *priors()); };
 }
 
 }  // namespace
@@ -127,33 +138,35 @@ TEST(SceneQueries, RouteFollowsTheGraphThroughTheDoor) {
 }
 
 TEST(SceneQueries, AnswersQuestionsFromTheGraph) {
-  const SceneGraph g = twoRoomGraph();
-  BuiltinReasoner R(priors());
-  const auto sem = graphSemantics(g, &R);
-  const std::string here = answerQuestion(g, "Describe the current area", Vec3(2.0, 2.0, 1.2), sem, *priors());
+  const auto ask = twoRoomAnswers();
+  const std::string here = ask("Describe the current area", Vec3(2.0, 2.0, 1.2));
   EXPECT_NE(here.find("region 0 (kitchen)"), std::string::npos) << here;
   EXPECT_NE(here.find("fridge"), std::string::npos) << here;
   EXPECT_EQ(here.find("conference table"), std::string::npos) << here;
-  const std::string where = answerQuestion(g, "Where is the fridge?", std::nullopt, sem, *priors());
+  const std::string where = ask("Where is the fridge?", std::nullopt);
   EXPECT_NE(where.find("fridge (object 1) is at (0.6, 3.3) in region 0"), std::string::npos) << where;
-  const std::string none = answerQuestion(g, "Is there a bed?", std::nullopt, sem, *priors());
+  const std::string none = ask("Is there a bed?", std::nullopt);
   EXPECT_NE(none.find("No bed"), std::string::npos) << none;
-  const std::string layout = answerQuestion(g, "Describe the layout", std::nullopt, sem, *priors());
+  const std::string layout = ask("Describe the layout", std::nullopt);
   EXPECT_NE(layout.find("2 regions and 4 objects"), std::string::npos) << layout;
   EXPECT_NE(layout.find("next to region 1 ("), std::string::npos) << layout;  // was "next to 1"
-  const std::string all = answerQuestion(g, "List all objects", Vec3(2.0, 2.0, 1.2), sem, *priors());
+}
+
+TEST(SceneQueries, AnswersAboutANamedRoomAndListsObjects) {
+  const auto ask = twoRoomAnswers();
+  const std::string all = ask("List all objects", Vec3(2.0, 2.0, 1.2));
   EXPECT_EQ(all.rfind("The map holds 4 objects in 2 regions: ", 0), 0u) << all;
-  for (const SgObject& o : g.objects) EXPECT_NE(all.find("1 " + o.label), std::string::npos) << all;
-  const std::string in_kitchen = answerQuestion(g, "What objects are in the kitchen?", std::nullopt, sem, *priors());
-  EXPECT_EQ(in_kitchen.rfind("Region 0 (kitchen).", 0), 0u) << in_kitchen;
-  // A room named in the question: that region, wherever the asker is.
-  const std::string kitchen = answerQuestion(g, "What is in the kitchen?", Vec3(9.0, 1.2, 1.2), sem, *priors());
-  EXPECT_EQ(kitchen.rfind("Region 0 (kitchen).", 0), 0u) << kitchen;
-  EXPECT_NE(kitchen.find("fridge"), std::string::npos) << kitchen;
-  EXPECT_EQ(kitchen.find("conference table"), std::string::npos) << kitchen;
-  const std::string next = answerQuestion(g, "Which room is next to the kitchen?", std::nullopt, sem, *priors());
+  for (const SgObject& o : twoRoomGraph().objects) EXPECT_NE(all.find("1 " + o.label), std::string::npos) << all;
+  // A room named in the question: the regions labelled so, wherever the asker is.
+  for (const char* q : {"What is in the kitchen?", "What objects are in the kitchen?"}) {
+    const std::string kitchen = ask(q, Vec3(9.0, 1.2, 1.2));
+    EXPECT_EQ(kitchen.rfind("Region 0 (kitchen).", 0), 0u) << q << ": " << kitchen;
+    EXPECT_NE(kitchen.find("fridge"), std::string::npos) << kitchen;
+    EXPECT_EQ(kitchen.find("conference table"), std::string::npos) << kitchen;
+  }
+  const std::string next = ask("Which room is next to the kitchen?", std::nullopt);
   EXPECT_NE(next.find("It connects to region 1"), std::string::npos) << next;
-  const std::string no_room = answerQuestion(g, "Describe the bedroom", std::nullopt, sem, *priors());
+  const std::string no_room = ask("Describe the bedroom", std::nullopt);
   EXPECT_NE(no_room.find("No region is labelled bedroom yet"), std::string::npos) << no_room;
 }
 
