@@ -22,3 +22,4 @@ echo
 "$USSNAV" ask --graph "$OUT/scene_graph.json" --question "Describe the layout"
 echo
 echo "demo: results in $OUT/ (world.png, topdown.png, result.json, scene_graph.json, trajectory.csv)"
+echo "      open $OUT/scene_graph.html in a browser to explore the scene graph (pan, zoom, click)"

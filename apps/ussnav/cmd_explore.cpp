@@ -69,7 +69,7 @@ void runExplore(const ExploreArgs& a) {
     std::printf("  region labels (against ground truth): %d of %d correct\n", r.labels_correct, r.labels_scored);
   std::printf("  per-frame update: median %.2f ms (%.0f Hz), wall %.1f s\n", 1000.0 / std::max(r.update_hz, 1e-9),
               r.update_hz, r.wall_s);
-  std::printf("wrote %s/result.json, scene_graph.json, trajectory.csv, topdown.png\n", a.out.c_str());
+  std::printf("wrote %s/result.json, scene_graph.json, scene_graph.html (open it in a browser), trajectory.csv, topdown.png\n", a.out.c_str());
 }
 
 void addExploreCommand(CLI::App& root) {

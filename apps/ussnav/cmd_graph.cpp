@@ -1,5 +1,6 @@
-// `ussnav graph show|stats`: read a saved scene graph (DIR/scene_graph.json from `ussnav map`)
-// and draw it or count its layers. Works on the document alone, no world or simulator.
+// `ussnav graph show|view|stats`: read a saved scene graph (DIR/scene_graph.json from `ussnav map`
+// or `explore`) and draw it, put it in a web page, or count its layers. Works on the document
+// alone; `view` can add a world's ground truth and a flown trajectory.
 
 #include <cstdio>
 #include <iostream>
@@ -8,7 +9,11 @@
 #include "command.hpp"
 #include "ussnav/core/image.hpp"
 #include "ussnav/scene_graph/drawing.hpp"
+#include "ussnav/episode/episode_drawing.hpp"
 #include "ussnav/scene_graph/io.hpp"
+#include "ussnav/scene_graph/viewer.hpp"
+#include "ussnav/sim/trajectory.hpp"
+#include "ussnav/sim/world_io.hpp"
 
 namespace ussnav::cli {
 namespace {
@@ -17,6 +22,10 @@ struct ShowArgs {
   std::string file, out;
   double px_per_m = 30.0;
   bool coverage = false;
+};
+
+struct ViewArgs {
+  std::string file, out, world, trajectory, title;
 };
 
 struct StatsArgs {
@@ -38,6 +47,19 @@ void runShow(const ShowArgs& a) {
   img.text(8, 8, title, {0, 0, 0}, Image::textWidth(title, 2) + 16 <= view.width ? 2 : 1);
   writePng(a.out, img);
   std::printf("wrote %s (%d x %d px)\n", a.out.c_str(), view.width, view.height);
+}
+
+void runView(const ViewArgs& a) {
+  const SceneGraph g = loadSceneGraph(a.file);
+  ViewerOverlay ov;
+  if (!a.world.empty()) ov = worldOverlay(loadWorld(a.world));
+  if (!a.trajectory.empty()) ov.trajectory = loadWaypointsCsv(a.trajectory);
+  ov.title = a.title;
+  writeSceneGraphHtml(a.out, g, ov);
+  const SceneGraphCounts c = countLayers(g);
+  std::printf("wrote %s (%d nodes, %d regions, %d objects%s%s); open it in a browser\n", a.out.c_str(), c.nodes,
+              c.regions, c.objects, a.world.empty() ? "" : ", the world's rooms and walls",
+              a.trajectory.empty() ? "" : ", the trajectory");
 }
 
 void runStats(const StatsArgs& a) {
@@ -81,6 +103,18 @@ void addGraphCommands(CLI::App& root) {
   s->add_option("--px-per-m", show.px_per_m, "scale, pixels per metre")->capture_default_str()->check(CLI::Range(2.0, 200.0));
   s->add_flag("--coverage", show.coverage, "also shade the visited coverage cells");
   s->callback([] { runShow(show); });
+
+  static ViewArgs view;
+  auto* v = graph->add_subcommand(
+      "view", "Write a saved scene graph as one self-contained web page: pan, zoom, layers, details on click, object search");
+  v->fallthrough();
+  v->add_option("file", view.file, "scene_graph.json")->required()->check(CLI::ExistingFile);
+  v->add_option("--out,-o", view.out, "HTML file to write")->required();
+  v->add_option("--world", view.world, "world JSON: also draw its rooms (with their types) and walls")->check(CLI::ExistingFile);
+  v->add_option("--trajectory", view.trajectory, "CSV with x,y,z columns (DIR/trajectory.csv): also draw the flight")
+      ->check(CLI::ExistingFile);
+  v->add_option("--title", view.title, "page title (default: the graph's source)");
+  v->callback([] { runView(view); });
 
   static StatsArgs st;
   auto* t = graph->add_subcommand("stats", "Counts per layer: nodes, edges by type, regions, objects by label, coverage");

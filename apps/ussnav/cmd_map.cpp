@@ -12,6 +12,7 @@
 #include "ussnav/core/error.hpp"
 #include "ussnav/core/image.hpp"
 #include "ussnav/core/io.hpp"
+#include "ussnav/episode/episode_drawing.hpp"
 #include "ussnav/eval/map_quality.hpp"
 #include "ussnav/eval/scene_quality.hpp"
 #include "ussnav/mapping/map_drawing.hpp"
@@ -19,6 +20,7 @@
 #include "ussnav/pipeline/mapper.hpp"
 #include "ussnav/scene_graph/drawing.hpp"
 #include "ussnav/scene_graph/io.hpp"
+#include "ussnav/scene_graph/viewer.hpp"
 #include "ussnav/sim/simulator.hpp"
 #include "ussnav/sim/trajectory.hpp"
 #include "ussnav/sim/uav.hpp"
@@ -182,6 +184,10 @@ void runMap(const MapArgs& a) {
   std::filesystem::create_directories(a.out);
   writePng(std::filesystem::path(a.out) / "map.png", img);
   saveSceneGraph(std::filesystem::path(a.out) / "scene_graph.json", sg);
+  ViewerOverlay ov = worldOverlay(world);
+  ov.title = "ussnav map: " + std::filesystem::path(a.world).filename().string() + " (" + a.trajectory + ")";
+  ov.trajectory = flown;
+  writeSceneGraphHtml(std::filesystem::path(a.out) / "scene_graph.html", sg, ov);
   writeJsonAtomic(std::filesystem::path(a.out) / "stats.json", stats);
 
   std::printf("frames %d, flown %.1f m, collisions %d, known voxels %zu, grid %.1f MB, GCM visited %zu cells (%.0f m^2, %.0f B/m^2)\n",
@@ -204,7 +210,7 @@ void runMap(const MapArgs& a) {
                 stats["objects"]["duplicate_rate"].get<double>());
   for (const auto& [stage, v] : stats["stage_ms"].items())
     std::printf("  %-10s median %7.2f ms  p95 %7.2f ms\n", stage.c_str(), v["median"].get<double>(), v["p95"].get<double>());
-  std::printf("wrote %s/map.png, %s/scene_graph.json and %s/stats.json\n", a.out.c_str(), a.out.c_str(),
+  std::printf("wrote %s/map.png, scene_graph.json, scene_graph.html (open it in a browser) and stats.json\n",
               a.out.c_str());
 }
 

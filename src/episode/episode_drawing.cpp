@@ -1,8 +1,10 @@
 #include "ussnav/episode/episode_drawing.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "ussnav/scene_graph/drawing.hpp"
+#include "ussnav/sim/layout_geometry.hpp"
 
 namespace ussnav {
 
@@ -50,6 +52,31 @@ Image drawEpisode(const World& world, const EpisodeRun& run, const CameraCoverag
                 R.time_s);
   img.text(8, 8, title, {0, 0, 0}, 2);
   return img;
+}
+
+ViewerOverlay worldOverlay(const World& world, const std::vector<const Object*>& goal_instances) {
+  ViewerOverlay ov;
+  for (const Room& r : world.rooms) ov.rooms.push_back({r.id, r.type, r.polygon});
+  for (const Wall& w : world.walls) {
+    const double len = (w.b - w.a).norm();
+    if (len < 1e-9) continue;
+    const Vec2 d = (w.b - w.a) / len;
+    std::vector<std::pair<double, double>> doors;
+    for (const Opening& op : w.openings)
+      if (op.bottom < 0.3) doors.emplace_back(std::clamp(op.start, 0.0, len), std::clamp(op.end, 0.0, len));
+    std::sort(doors.begin(), doors.end());
+    double s = 0.0;
+    for (const auto& [d0, d1] : doors) {
+      if (d0 > s + 1e-6) ov.walls.push_back({w.a + d * s, w.a + d * d0});
+      s = std::max(s, d1);
+    }
+    if (len > s + 1e-6) ov.walls.push_back({w.a + d * s, w.b});
+  }
+  for (const Object* o : goal_instances) {
+    const auto c = footprintCorners(o->box);
+    ov.goals.push_back({o->id, o->category, std::vector<Vec2>(c.begin(), c.end())});
+  }
+  return ov;
 }
 
 }  // namespace ussnav

@@ -5,6 +5,7 @@
 #include "ussnav/core/io.hpp"
 #include "ussnav/episode/episode.hpp"
 #include "ussnav/scene_graph/io.hpp"
+#include "ussnav/scene_graph/viewer.hpp"
 
 namespace ussnav {
 
@@ -64,6 +65,15 @@ void writeEpisode(const std::string& dir, const EpisodeRun& run) {
   }
   writeFileAtomic(d / "trajectory.csv", csv.str());
   saveSceneGraph(d / "scene_graph.json", run.graph);
+  ViewerOverlay ov = run.overlay;
+  ov.title = run.result.world + ": " + run.result.goal + " (" + run.result.planner + ")";
+  for (const TrajectorySample& s : run.trajectory) ov.trajectory.push_back(s.pose.position);
+  const nlohmann::json r = toJson(run.result);
+  ov.episode = nlohmann::json::object();
+  for (const char* k : {"world", "goal", "planner", "seed", "success", "spl", "path_length_m", "shortest_path_m",
+                        "time_s", "end_reason", "found_object", "split"})
+    ov.episode[k] = r[k];
+  writeSceneGraphHtml(d / "scene_graph.html", run.graph, ov);
   writePng(d / "topdown.png", run.topdown);
   writeJsonAtomic(d / "result.json", toJson(run.result));  // last: its presence marks a complete run
 }

@@ -242,6 +242,7 @@ void FlightLoop::finish() {
   }
   R_.reasoner_fallbacks = decider_ ? decider_->stats().fallbacks : 0;
   run_.topdown = drawEpisode(sim_.world(), run_, camera_, truth_.instances, start_);
+  run_.overlay = worldOverlay(sim_.world(), truth_.instances);
   R_.wall_s = wall_.ms() / 1000.0;
 }
 

@@ -1,6 +1,7 @@
 #include "ussnav/sim/trajectory.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -60,18 +61,42 @@ std::vector<Vec3> loadWaypointsCsv(const std::filesystem::path& path) {
   std::vector<Vec3> out;
   std::string line;
   int n = 0;
+  std::array<int, 3> col{0, 1, 2};  // columns of x, y, z
+  int columns = 3;
+  bool header_possible = true;  // only the first row that is not a comment
   while (std::getline(in, line)) {
     ++n;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty() || line[0] == '#') continue;
-    if (n == 1 && line.find_first_of("0123456789") != 0 && line[0] != '-') continue;  // header
+    std::vector<std::string> cells;
     std::stringstream ss(line);
-    std::string cell;
+    for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
+    const bool header = header_possible && line.find_first_of("0123456789") != 0 && line[0] != '-' && line[0] != '.';
+    header_possible = false;
+    if (header) {
+      // A header: columns named x, y, z are read wherever they are (t,x,y,z,yaw from `explore`).
+      std::array<int, 3> named{-1, -1, -1};
+      for (size_t i = 0; i < cells.size(); ++i)
+        for (int k = 0; k < 3; ++k)
+          if (cells[i] == std::string(1, char('x' + k))) named[size_t(k)] = int(i);
+      if (named[0] >= 0 || named[1] >= 0 || named[2] >= 0) {
+        for (int k = 0; k < 3; ++k)
+          if (named[size_t(k)] < 0)
+            throw InputError(path.string(), "line " + std::to_string(n),
+                             std::string("header names no '") + char('x' + k) + "' column");
+        col = named;
+        columns = *std::max_element(col.begin(), col.end()) + 1;
+      }
+      continue;
+    }
+    if (int(cells.size()) < columns)
+      throw InputError(path.string(), "line " + std::to_string(n),
+                       "expected " + std::to_string(columns) + " comma-separated columns with x,y,z");
     double v[3];
     for (int i = 0; i < 3; ++i) {
-      if (!std::getline(ss, cell, ',')) throw InputError(path.string(), "line " + std::to_string(n), "expected x,y,z");
+      const std::string& cell = cells[size_t(col[size_t(i)])];
       try {
-        size_t used = 0;
-        v[i] = std::stod(cell, &used);
+        v[i] = std::stod(cell);
       } catch (const std::exception&) {
         throw InputError(path.string(), "line " + std::to_string(n), "'" + cell + "' is not a number");
       }

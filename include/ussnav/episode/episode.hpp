@@ -22,6 +22,7 @@
 #include "ussnav/core/image.hpp"
 #include "ussnav/exploration/planner.hpp"
 #include "ussnav/scene_graph/scene_graph.hpp"
+#include "ussnav/scene_graph/viewer.hpp"
 #include "ussnav/sim/world.hpp"
 
 namespace ussnav {
@@ -89,6 +90,7 @@ struct EpisodeRun {
   SceneGraph graph;
   std::vector<TrajectorySample> trajectory;
   Image topdown{1, 1};
+  ViewerOverlay overlay;  // ground truth for DIR/scene_graph.html (rooms, walls, goal instances)
 };
 
 // Called every frame with the frame count, sim time and the result so far (for progress lines).
@@ -98,7 +100,9 @@ using EpisodeProgress = std::function<void(const EpisodeResult&)>;
 EpisodeRun runEpisode(const EpisodeSpec& spec, const Config& cfg, const EpisodeProgress& progress = {});
 
 nlohmann::json toJson(const EpisodeResult& r);
-// Writes DIR/result.json, DIR/scene_graph.json, DIR/trajectory.csv and DIR/topdown.png.
+// Writes DIR/result.json, DIR/scene_graph.json, DIR/scene_graph.html (the graph in a web page
+// with the trajectory, the ground truth of run.overlay and the result), DIR/trajectory.csv and
+// DIR/topdown.png.
 void writeEpisode(const std::string& dir, const EpisodeRun& run);
 
 }  // namespace ussnav

@@ -15,7 +15,8 @@ namespace ussnav {
 std::vector<Vec3> lawnmowerWaypoints(const GtPlanner& planner, double spacing);
 // Archimedean spiral from `center` with `spacing` between turns, points every ~1 m that are free.
 std::vector<Vec3> spiralWaypoints(const GtPlanner& planner, const Vec2& center, double spacing);
-// CSV with a header line and columns x,y,z (yaw ignored); throws InputError on bad rows.
+// CSV rows x,y,z; an optional header naming columns x, y and z reads them where they are
+// (DIR/trajectory.csv from `explore`: t,x,y,z,yaw). Throws InputError on bad rows.
 std::vector<Vec3> loadWaypointsCsv(const std::filesystem::path& path);
 // Joins waypoints by shortest paths from `start`; unreachable waypoints are skipped (counted in
 // `skipped` when given). Returns the whole polyline.
