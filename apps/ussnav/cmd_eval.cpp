@@ -70,7 +70,7 @@ void runEval(const EvalArgs& a) {
     for (const std::string& goal : goals) {
       const Instruction ins = interpretInstruction(goal, *priors);
       if (ins.targets.empty()) throw InputError(a.suite, "goals", "'" + goal + "' names no object to find");
-      const GoalMatcher m(goal, ins.targets, encoder, cfg.episode.goal_similarity);
+      const GoalMatcher m = instructionGoal(ins, encoder, cfg.episode.goal_similarity);
       if (goalInstances(worlds.back(), m).empty()) {
         ++skipped;
         continue;

@@ -51,7 +51,7 @@ FlightLoop::FlightLoop(const EpisodeSpec& spec, const Config& cfg)
       goal_room_(instruction_.room.empty() ? -1 : priors_->roomIndex(instruction_.room)),
       sim_(spec.world, cfg, spec.seed),
       start_(spec.start ? *spec.start : sim_.startPose()),
-      goal_(spec.goal, instruction_.targets, encoder_, ep_.goal_similarity),
+      goal_(instructionGoal(instruction_, encoder_, ep_.goal_similarity)),
       truth_(groundTruth(sim_, goal_, start_, ep_.found_radius, *priors_, goal_room_)),
       mapper_(cfg, mapperOptions(ep_),
               std::make_unique<OracleDetector>(sim_.instanceLabels(), OracleRealism::fromConfig(cfg.perception),

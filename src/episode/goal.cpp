@@ -26,8 +26,8 @@ GoalMatcher::GoalMatcher(std::string goal, std::shared_ptr<const TextEncoder> en
 }
 
 GoalMatcher::GoalMatcher(std::string goal, std::vector<std::string> targets, std::shared_ptr<const TextEncoder> encoder,
-                         double threshold)
-    : goal_(normalise(std::move(goal))), encoder_(std::move(encoder)), threshold_(threshold) {
+                         double threshold, std::function<bool(const std::string&)> serves)
+    : goal_(normalise(std::move(goal))), serves_(std::move(serves)), encoder_(std::move(encoder)), threshold_(threshold) {
   for (auto& t : targets)
     if (!normalise(t).empty()) targets_.push_back(normalise(t));
   if (targets_.empty()) throw InputError("goal", "goal", "'" + goal_ + "' names no object category to look for");
@@ -41,11 +41,19 @@ double GoalMatcher::similarity(const std::string& label) const {
   if (it != cache_.end()) return it->second;
   double s = 0.0;
   for (const auto& t : targets_) s = std::max(s, l == t ? 1.0 : encoder_->similarity(t, l));
+  if (s < threshold_ && serves_ && serves_(l)) s = threshold_;  // serves the request as well as a target
   cache_.emplace(l, s);
   return s;
 }
 
 bool GoalMatcher::matches(const std::string& label) const { return similarity(label) >= threshold_; }
+
+GoalMatcher instructionGoal(const Instruction& instruction, std::shared_ptr<const TextEncoder> encoder, double threshold) {
+  std::function<bool(const std::string&)> serves;
+  if (instruction.how == "functional")
+    serves = [in = instruction](const std::string& label) { return servesRequest(in, label); };
+  return GoalMatcher(instruction.text, instruction.targets, std::move(encoder), threshold, std::move(serves));
+}
 
 std::vector<const Object*> goalInstances(const World& world, const GoalMatcher& goal,
                                          const std::function<bool(const std::string&)>& in_room) {

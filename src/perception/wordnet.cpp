@@ -380,6 +380,37 @@ bool knownAsVerb(const std::string& word) {
       false);
 }
 
+std::string verbGlossOf(const std::string& word) {
+  const std::string w = lower(word);
+  if (w.empty() || w.size() >= WORDBUF - 1 || w.find(' ') != std::string::npos) return {};
+  return withDb(
+      [&](Db&) -> std::string {
+        const auto firstSense = [](const std::string& v) -> std::string {
+          std::vector<char> buf(v.begin(), v.end());
+          buf.push_back('\0');
+          IndexPtr idx = index_lookup(buf.data(), VERB);
+          if (!idx) return {};
+          std::string gloss;
+          if (idx->off_cnt > 0) {
+            char empty[1] = {0};
+            if (SynsetPtr s = read_synset(VERB, idx->offset[0], empty)) {
+              gloss = cleanGloss(s->defn ? s->defn : "");
+              free_synset(s);
+            }
+          }
+          free_index(idx);
+          return gloss;
+        };
+        if (std::string g = firstSense(w); !g.empty()) return g;
+        std::vector<char> buf(w.begin(), w.end());
+        buf.push_back('\0');
+        for (char* m = morphstr(buf.data(), VERB); m; m = morphstr(nullptr, VERB))
+          if (std::string g = firstSense(m); !g.empty()) return g;
+        return {};
+      },
+      std::string());
+}
+
 bool namesAnimal(const std::string& word) {
   return withDb(
       [&](Db& db) {

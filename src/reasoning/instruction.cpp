@@ -60,6 +60,50 @@ std::set<std::string> stems(const std::string& text) {
   return out;
 }
 
+// Step 3's score of one name against the request's stemmed content words `want` (of them
+// `verbs` stand as verbs): 2 per word in the name or its synonyms, 1.5 per purpose ("a place TO
+// SLEEP", "used FOR COOKING"), 1 per other mention, in the name's WordNet gloss, its nearest
+// hypernym's gloss (a chair is "a seat", a seat "furniture that is designed for sitting on") and
+// `extra_text`; an -ing word of the name adds its verb's gloss as purposes ("dining" table: to
+// dine is to "eat dinner"). A verb of the request counts in a gloss only where the gloss uses it
+// as a verb: a purpose, an -ing / -ed form, after "can" ("where several people can SIT"); a book
+// is "a written work", not somewhere to work. `object` false (room types, scored on our own
+// descriptions, written as purposes): no hypernym, no verb glosses.
+double requestScore(const std::set<std::string>& want, const std::set<std::string>& verbs, const std::string& name,
+                    const std::string& extra_text, bool object) {
+  std::string synonyms;
+  for (const auto& syn : wordnet::synonymsOf(name)) synonyms += syn + " ";
+  const std::set<std::string> name_words = stems(name + " " + synonyms);
+  std::string gloss = wordnet::glossOf(name) + " " + extra_text;
+  if (object)
+    if (const auto h = wordnet::hypernymsOf(name); !h.empty()) gloss += " ; " + wordnet::glossOf(h.front());
+  const std::set<std::string> gloss_words = stems(gloss), extra_words = stems(extra_text);
+  std::set<std::string> purposes, verb_forms;
+  // A name with an -ing word says what the thing is for: a dining table is for dining, and to
+  // dine is to "have supper; eat dinner".
+  if (object)
+    for (const auto& w : instructionWords(name))
+      if (w.size() > 5 && w.ends_with("ing"))
+        for (const auto& p : stems(wordnet::verbGlossOf(w))) purposes.insert(p);
+  const auto g = instructionWords(gloss);
+  for (size_t i = 0; i < g.size(); ++i) {
+    if (i + 1 < g.size() && (g[i] == "to" || g[i] == "for")) purposes.insert(stemWord(g[i + 1]));
+    const auto ends = [&](const char* x) { return g[i].size() > 4 && g[i].ends_with(x); };
+    if (ends("ing") || ends("ed")) verb_forms.insert(stemWord(g[i]));
+    if (i + 1 < g.size() && (g[i] == "can" || g[i] == "could" || g[i] == "may" || g[i] == "will"))
+      verb_forms.insert(stemWord(g[i + 1]));  // "where several people can SIT"
+  }
+  double s = 0.0;
+  for (const auto& w : want)
+    s += name_words.count(w) ? 2.0
+         : purposes.count(w) ? 1.5
+         : extra_words.count(w) || (gloss_words.count(w) && (!verbs.count(w) || verb_forms.count(w))) ? 1.0
+                              : 0.0;
+  // A compound known only by its head noun ("dog bed" -> bed) ranks after the head itself.
+  if (const auto r = wordnet::resolveLabel(name); r && !r->modifiers.empty()) s *= 0.9;
+  return s;
+}
+
 }  // namespace
 
 std::vector<std::string> instructionWords(const std::string& text) {
@@ -84,6 +128,10 @@ std::string stemWord(const std::string& w) {
   else if (ends("ed")) s = w.substr(0, w.size() - 2);
   else if (ends("es") && !ends("ses")) s = w.substr(0, w.size() - 1);
   else if (ends("s") && !ends("ss")) s = w.substr(0, w.size() - 1);
+  // A doubled final consonant left by the suffix goes: "sitting" and "sit", "stopped" and "stop"
+  // ("dressing", "falling" and "buzzing" keep theirs).
+  if (s != w && s.size() > 3 && s.back() == s[s.size() - 2] && std::string("aeioulsz").find(s.back()) == std::string::npos)
+    s.pop_back();
   // A final silent e goes on both sides: "store" and "stored", "bake" and "baking" meet.
   if (s.size() > 3 && s.back() == 'e' && s[s.size() - 2] != 'e') s.pop_back();
   return s;
@@ -163,36 +211,10 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
     want.insert(stemWord(content[i]));
     if (verb[i]) verbs.insert(stemWord(content[i]));
   }
-  auto score = [&](const std::string& name, const std::string& extra_text) {
-    const std::set<std::string> name_words = stems(name + " " + [&] {
-      std::string s;
-      for (const auto& syn : wordnet::synonymsOf(name)) s += syn + " ";
-      return s;
-    }());
-    const std::string gloss = wordnet::glossOf(name) + " " + extra_text;
-    const std::set<std::string> gloss_words = stems(gloss), extra_words = stems(extra_text);
-    // A purpose ("a place TO SLEEP", "used FOR SLEEPING") says more than a mention. A verb of
-    // the request counts in a WordNet gloss only where the gloss uses it as a verb: a purpose,
-    // an -ing / -ed form, after "can" ("where several people can SIT"). A book is "a written
-    // work", not somewhere to work. (Our own room descriptions are written as purposes throughout.)
-    std::set<std::string> purposes, verb_forms;
-    const auto g = instructionWords(gloss);
-    for (size_t i = 0; i < g.size(); ++i) {
-      if (i + 1 < g.size() && (g[i] == "to" || g[i] == "for")) purposes.insert(stemWord(g[i + 1]));
-      const auto ends = [&](const char* x) { return g[i].size() > 4 && g[i].ends_with(x); };
-      if (ends("ing") || ends("ed")) verb_forms.insert(stemWord(g[i]));
-      if (i + 1 < g.size() && (g[i] == "can" || g[i] == "could" || g[i] == "may" || g[i] == "will"))
-        verb_forms.insert(stemWord(g[i + 1]));  // "where several people can SIT"
-    }
-    double s = 0.0;
-    for (const auto& w : want)
-      s += name_words.count(w) ? 2.0
-           : purposes.count(w) ? 1.5
-           : extra_words.count(w) || (gloss_words.count(w) && (!verbs.count(w) || verb_forms.count(w))) ? 1.0
-                                : 0.0;
-    // A compound known only by its head noun ("dog bed" -> bed) ranks after the head itself.
-    if (const auto r = wordnet::resolveLabel(name); r && !r->modifiers.empty()) s *= 0.9;
-    return s;
+  I.request.assign(want.begin(), want.end());
+  I.request_verbs.assign(verbs.begin(), verbs.end());
+  const auto score = [&](const std::string& name, const std::string& extra_text, bool object = true) {
+    return requestScore(want, verbs, name, extra_text, object);
   };
   std::vector<std::string> vocab = P.categories();
   for (const auto& v : extra_vocabulary)
@@ -209,7 +231,7 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   for (const RoomType& r : P.rooms()) {
     std::string aliases;
     for (const auto& a : r.aliases) aliases += a + " ";
-    const double s = score(r.name, r.description + " " + aliases);
+    const double s = score(r.name, r.description + " " + aliases, false);
     if (s > best_room) best_room = s, I.room_hint = r.name;
   }
   // With a verb, the object named stays the target unless a category answers the verb and the
@@ -226,6 +248,7 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   }
   if (!I.targets.empty()) {
     I.how = "functional";
+    I.score = scored.front().first;
     return I;
   }
   if (!I.room_hint.empty() && I.room.empty()) {
@@ -237,6 +260,19 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   I.targets.push_back(joinWords(content, 0, content.size()));
   I.how = "literal";
   return I;
+}
+
+double requestScore(const Instruction& I, const std::string& label) {
+  if (I.how != "functional") return 0.0;
+  const std::set<std::string> want(I.request.begin(), I.request.end()), verbs(I.request_verbs.begin(), I.request_verbs.end());
+  return requestScore(want, verbs, label, "", true);
+}
+
+bool servesRequest(const Instruction& I, const std::string& label) {
+  // A compound known by its head noun scores 0.9 of the head ("office chair"), as in ranking.
+  // (Letting a label inherit what its hypernyms serve, an armchair being a chair, also let a
+  // plunger, a "hand tool", serve "somewhere to wash my hands".)
+  return I.how == "functional" && I.score > 0.0 && requestScore(I, label) >= 0.9 * I.score - 1e-9;
 }
 
 }  // namespace ussnav

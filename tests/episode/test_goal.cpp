@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "support/paths.hpp"
+#include "support/test_priors.hpp"
 #include "support/test_worlds.hpp"
 #include "ussnav/core/config.hpp"
 #include "ussnav/core/error.hpp"
@@ -46,4 +47,26 @@ TEST(Goal, ADogBedIsNotABedInARealHouse) {
   const auto inst = goalInstances(w, GoalMatcher("bed", enc, defaultConfig().episode.goal_similarity));
   ASSERT_EQ(inst.size(), 1u);
   EXPECT_EQ(inst[0]->category, "bed");
+}
+
+TEST(Goal, AFunctionalRequestIsServedByObjectsOutsideTheTablesVocabulary) {
+  // "somewhere to cook" names a pan among the priors' categories; a generated apartment has a
+  // stove ("a kitchen appliance used for cooking food") and no pan. The instruction's judge lets
+  // the stove be a goal instance (and, in an episode, the object declared); a named goal keeps
+  // to its category.
+  World w = test::twoRooms(true);
+  test::addObject(w, "stove", Vec3(7, 1, 0.45), Vec3(0.3, 0.3, 0.45));
+  test::addObject(w, "bed", Vec3(1.5, 3.0, 0.3), Vec3(0.9, 0.7, 0.3));
+  const std::shared_ptr<const TextEncoder> enc(makeTextEncoder(defaultConfig().perception));
+  const double t = defaultConfig().episode.goal_similarity;
+  const Instruction cook = interpretInstruction("somewhere to cook", *test::priors());
+  ASSERT_EQ(cook.how, "functional");
+  const auto cooking = goalInstances(w, instructionGoal(cook, enc, t));
+  ASSERT_EQ(cooking.size(), 1u);
+  EXPECT_EQ(cooking[0]->category, "stove");
+  // Without the judge (targets alone) nothing in the world answers.
+  EXPECT_TRUE(goalInstances(w, GoalMatcher(cook.text, cook.targets, enc, t)).empty());
+  const auto beds = goalInstances(w, instructionGoal(interpretInstruction("bed", *test::priors()), enc, t));
+  ASSERT_EQ(beds.size(), 1u);
+  EXPECT_EQ(beds[0]->category, "bed");
 }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "ussnav/perception/text_encoder.hpp"
+#include "ussnav/reasoning/instruction.hpp"
 
 namespace ussnav {
 
@@ -24,9 +25,11 @@ class GoalMatcher {
   // Throws InputError (file "goal") on an empty goal.
   GoalMatcher(std::string goal, std::shared_ptr<const TextEncoder> encoder, double threshold);
   // An instruction's categories (reasoning/instruction.hpp): a label matches when it is within
-  // `threshold` of any of them; `goal` is the instruction text, for reports.
+  // `threshold` of any of them, or when `serves` (optional) accepts it (a functional request's
+  // judge, servesRequest: a stove serves "somewhere to cook" whose targets were a pan); such a
+  // label's similarity is `threshold`. `goal` is the instruction text, for reports.
   GoalMatcher(std::string goal, std::vector<std::string> targets, std::shared_ptr<const TextEncoder> encoder,
-              double threshold);
+              double threshold, std::function<bool(const std::string&)> serves = {});
   bool matches(const std::string& label) const;
   double similarity(const std::string& label) const;
   const std::string& goal() const { return goal_; }
@@ -34,11 +37,17 @@ class GoalMatcher {
  private:
   std::string goal_;
   std::vector<std::string> targets_;
+  std::function<bool(const std::string&)> serves_;
   std::shared_ptr<const TextEncoder> encoder_;
   double threshold_;
   mutable std::mutex mutex_;
   mutable std::unordered_map<std::string, double> cache_;
 };
+
+// The goal of an interpreted instruction: its targets, and for a functional request its judge
+// (servesRequest) for labels the targets do not name. Episodes and `eval` build it alike.
+GoalMatcher instructionGoal(const Instruction& instruction, std::shared_ptr<const TextEncoder> encoder,
+                            double threshold);
 
 // Ground-truth instances of the goal in `world` (evaluation only); with `in_room` (a predicate
 // on the ground-truth room type) only those inside a room it accepts.

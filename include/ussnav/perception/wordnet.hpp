@@ -50,6 +50,9 @@ std::optional<Sense> lookupNoun(const std::string& word);
 // True when WordNet knows the single word as a verb, after verb morphology ("prints",
 // "watching", "ate" -> print, watch, eat). Instructions use it to tell "to print" from a print.
 bool knownAsVerb(const std::string& word);
+// Definition of the single word's most frequent verb sense, after verb morphology:
+// verbGlossOf("dining") = "have supper; eat dinner". Empty when WordNet has no such verb.
+std::string verbGlossOf(const std::string& word);
 // True when the word's most frequent noun sense is an animal ("dog", "cats", "pet"; not "guest"
 // or "office"), whatever sense lookupNoun() prefers indoors (it reads "dog" as an andiron).
 bool namesAnimal(const std::string& word);

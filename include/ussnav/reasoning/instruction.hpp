@@ -31,11 +31,23 @@ struct Instruction {
   std::string room;                  // required room type, "" = anywhere
   std::string room_hint;             // room type a functional request points at, "" = none
   std::string how;                   // named | functional | literal | room_only
+  // A functional request's stemmed content words (of them, those standing as verbs) and the
+  // targets' score: what labels the vocabulary did not hold are judged by (servesRequest).
+  std::vector<std::string> request, request_verbs;
+  double score = 0.0;
 };
 
 // Throws InputError (file "goal") on an empty or all-filler instruction.
 Instruction interpretInstruction(const std::string& text, const CommonsensePriors& priors,
                                  const std::vector<std::string>& extra_vocabulary = {});
+
+// Step 3's score of a label against a functional request (0 for other kinds).
+double requestScore(const Instruction& instruction, const std::string& label);
+// Whether an object labelled `label` satisfies a functional request as well as its best targets
+// do: a stove, seen, serves "somewhere to cook" though the priors' vocabulary offered a pan.
+// False for named, literal and room-only instructions (their targets are matched by the text
+// encoder).
+bool servesRequest(const Instruction& instruction, const std::string& label);
 
 // Lower-cased words of a text, punctuation dropped.
 std::vector<std::string> instructionWords(const std::string& text);
