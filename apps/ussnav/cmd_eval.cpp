@@ -1,6 +1,7 @@
 // `ussnav eval`: many episodes (suite worlds x goals x seeds x planners), in parallel, resumable:
 // every finished episode is appended to DIR/episodes.csv at once, and a re-run skips the
-// episodes already there. Ends by writing DIR/summary.json and DIR/summary.md (eval_report.hpp).
+// episodes already there. Ends by writing DIR/summary.json and DIR/summary.md (eval_report.hpp)
+// and DIR/index.html (eval_index.hpp).
 
 #include <algorithm>
 #include <atomic>
@@ -17,6 +18,7 @@
 #include "ussnav/core/io.hpp"
 #include "ussnav/core/timing.hpp"
 #include "ussnav/episode/goal.hpp"
+#include "ussnav/eval/eval_index.hpp"
 #include "ussnav/eval/eval_report.hpp"
 #include "ussnav/eval/suite.hpp"
 #include "ussnav/perception/text_encoder.hpp"
@@ -139,7 +141,7 @@ void runEval(const EvalArgs& a) {
         const EpisodeRow row = rowOf(run.result);
         std::lock_guard<std::mutex> lock(mu);
         if (a.save_episodes)
-          writeEpisode((out / "episodes" / (spec.world_name + "_" + j.goal + "_" + j.planner + "_s" + std::to_string(j.seed))).string(), run);
+          writeEpisode((out / "episodes" / episodeFolderName(row)).string(), run);
         csv_out << toCsv(row) << "\n";
         csv_out.flush();
         rows.push_back(row);
@@ -165,16 +167,21 @@ void runEval(const EvalArgs& a) {
   if (!first_error.empty()) throw std::runtime_error("episode failed: " + first_error + " (finished episodes are in " + csv.string() + "; re-run to resume)");
 
   writeJsonAtomic(out / "summary.json", summaryJson(rows));
-  const std::string md = summaryMarkdown(rows, "ussnav eval: " + suite.name + " (full: " + cfg.reasoning.reasoner + " reasoner)");
+  const std::string title = "ussnav eval: " + suite.name + " (full: " + cfg.reasoning.reasoner + " reasoner)";
+  const std::string md = summaryMarkdown(rows, title);
   writeFileAtomic(out / "summary.md", md);
+  std::vector<bool> saved;
+  for (const EpisodeRow& r : rows)
+    saved.push_back(std::filesystem::exists(out / "episodes" / episodeFolderName(r) / "result.json"));
+  writeFileAtomic(out / "index.html", evalIndexHtml(rows, saved, title));
   std::printf("%s", md.c_str());
-  std::printf("wall %.0f s with %d jobs; wrote %s/episodes.csv, summary.json, summary.md\n", wall.ms() / 1000.0, n_jobs,
-              a.out.c_str());
+  std::printf("wall %.0f s with %d jobs; wrote %s/episodes.csv, summary.json, summary.md, index.html (open it in a browser)\n",
+              wall.ms() / 1000.0, n_jobs, a.out.c_str());
 }
 
 void addEvalCommand(CLI::App& root) {
   static EvalArgs args;
-  auto* cmd = root.add_subcommand("eval", "Run a suite of episodes per planner; write episodes.csv, summary.json, summary.md (resumable)");
+  auto* cmd = root.add_subcommand("eval", "Run a suite of episodes per planner; write episodes.csv, summary.json, summary.md, index.html (resumable)");
   cmd->fallthrough();
   cmd->add_option("--suite", args.suite, "suite YAML (docs/eval.md)")->capture_default_str()->check(CLI::ExistingFile);
   cmd->add_option("--planners", args.planners, "comma-separated: frontier, tsp, full")->capture_default_str();

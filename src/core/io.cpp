@@ -57,4 +57,17 @@ nlohmann::json readJsonFile(const fs::path& path) {
   }
 }
 
+std::string jsonForScript(const nlohmann::json& j) {
+  const std::string text = j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  std::string out;
+  out.reserve(text.size() + 64);
+  for (char c : text) {
+    if (c == '<')
+      out += "\\u003c";
+    else
+      out += c;
+  }
+  return out;
+}
+
 }  // namespace ussnav

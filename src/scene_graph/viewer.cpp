@@ -111,17 +111,7 @@ nlohmann::json viewerData(const SceneGraph& g, const ViewerOverlay& ov) {
 }
 
 std::string sceneGraphHtml(const SceneGraph& g, const ViewerOverlay& overlay) {
-  // Invalid UTF-8 in a label becomes U+FFFD rather than an exception; '<' only occurs inside
-  // JSON strings, where \u003c means the same, so "</script>" in a label cannot end the block.
-  const std::string data = viewerData(g, overlay).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-  std::string safe;
-  safe.reserve(data.size() + 64);
-  for (char c : data) {
-    if (c == '<')
-      safe += "\\u003c";
-    else
-      safe += c;
-  }
+  const std::string safe = jsonForScript(viewerData(g, overlay));
   std::string page(kPage);
   const size_t at = page.find(kDataMark);
   if (at == std::string::npos) throw std::logic_error("viewer page has no data mark");
