@@ -105,7 +105,9 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version exit 0; a bad command line (a missing file, an unknown option, a
+    // value out of range) is bad input like any other: exit 2 (CLI11's own codes are 100+).
+    return app.exit(e) == 0 ? 0 : 2;
   } catch (const ussnav::InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;

@@ -380,6 +380,25 @@ bool knownAsVerb(const std::string& word) {
       false);
 }
 
+std::string actGlossOf(const std::string& word) {
+  return withDb(
+      [&](Db& db) -> std::string {
+        std::string w = lower(word);
+        if (w.empty() || w.find(' ') != std::string::npos) return {};
+        std::vector<long> offs = db.senses(w);
+        if (offs.empty())
+          for (const auto& base : db.baseForms(w))
+            if (offs = db.senses(base); !offs.empty()) break;
+        for (long off : offs) {
+          const SynsetData& d = db.synset(off);
+          if (d.fnum >= 0 && d.fnum < MAXFNUM && lexfiles[d.fnum] && std::string(lexfiles[d.fnum]) == "noun.act")
+            return cleanGloss(d.gloss);
+        }
+        return {};
+      },
+      std::string());
+}
+
 std::string verbGlossOf(const std::string& word) {
   const std::string w = lower(word);
   if (w.empty() || w.size() >= WORDBUF - 1 || w.find(' ') != std::string::npos) return {};

@@ -32,6 +32,12 @@ const std::set<std::string>& verbCues() {
   return c;
 }
 
+// Verbs that take their meaning from the act after them: "take a bath", "have a nap".
+const std::set<std::string>& lightVerbs() {
+  static const std::set<std::string> v{"take", "have", "get", "grab", "taking", "having"};
+  return v;
+}
+
 bool physicalLexfile(const std::string& lf) {
   return lf == "noun.artifact" || lf == "noun.plant" || lf == "noun.object" || lf == "noun.food";
 }
@@ -198,6 +204,26 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
         break;
       }
     }
+  // A light verb and an act ("take a bath", "have a nap") ask for what the act needs, when the
+  // noun names no category itself: the act's WordNet gloss ("you soak and wash your body in a
+  // bathtub") becomes the request (a bath's artifact sense is a laboratory vessel).
+  std::vector<std::string> act;
+  if (!named.empty() && named.find(' ') == std::string::npos) {
+    const auto at = std::find(words.begin(), words.end(), named);
+    size_t k = size_t(at - words.begin());
+    while (k > 0 && (words[k - 1] == "a" || words[k - 1] == "an" || words[k - 1] == "the")) --k;
+    const bool after_light_verb = at != words.end() && k > 0 && lightVerbs().count(words[k - 1]);
+    const bool names_category = std::any_of(P.categories().begin(), P.categories().end(),
+                                            [&](const std::string& c) { return enc.similarity(named, c) >= 0.85; });
+    if (after_light_verb && !names_category) act = instructionWords(wordnet::actGlossOf(named));
+  }
+  if (!act.empty()) {
+    named.clear();
+    content.clear();
+    verb.clear();
+    for (const auto& w : act)
+      if (!fillers().count(w)) content.push_back(w), verb.push_back(false);
+  }
   const bool any_verb = std::find(verb.begin(), verb.end(), true) != verb.end();
   if (!named.empty() && !any_verb) {
     I.targets.push_back(named);
@@ -269,10 +295,17 @@ double requestScore(const Instruction& I, const std::string& label) {
 }
 
 bool servesRequest(const Instruction& I, const std::string& label) {
-  // A compound known by its head noun scores 0.9 of the head ("office chair"), as in ranking.
-  // (Letting a label inherit what its hypernyms serve, an armchair being a chair, also let a
-  // plunger, a "hand tool", serve "somewhere to wash my hands".)
-  return I.how == "functional" && I.score > 0.0 && requestScore(I, label) >= 0.9 * I.score - 1e-9;
+  if (I.how != "functional" || I.score <= 0.0) return false;
+  // A compound known by its head noun scores 0.9 of the head ("office chair"), as in ranking,
+  // and serves where its head does, unless a word before the head names an animal: a dog bed is
+  // no place for a person to sleep (as for "find a bed", docs/reasoning.md). (Letting a label
+  // inherit what its hypernyms serve, an armchair being a chair, also let a plunger, a "hand
+  // tool", serve "somewhere to wash my hands".)
+  double need = I.score;
+  if (const auto r = wordnet::resolveLabel(label); r && !r->modifiers.empty() &&
+                                                   std::none_of(r->modifiers.begin(), r->modifiers.end(), wordnet::namesAnimal))
+    need *= 0.9;
+  return requestScore(I, label) >= need - 1e-9;
 }
 
 }  // namespace ussnav

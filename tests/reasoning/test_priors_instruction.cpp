@@ -258,6 +258,7 @@ TEST(Instruction, AVerbIsAnActionNotTheObjectSought) {
 // for a pan only, and in a generated apartment, which has a stove and no pan, found nothing.
 TEST(Instruction, ObjectsSeenAreJudgedAgainstAFunctionalRequest) {
   const auto& P = *priors();
+  const auto targets = [&](const char* text) { return interpretInstruction(text, P).targets; };
   const Instruction cook = interpretInstruction("somewhere to cook", P);
   ASSERT_EQ(cook.how, "functional");
   EXPECT_GT(cook.score, 0.0);
@@ -268,6 +269,16 @@ TEST(Instruction, ObjectsSeenAreJudgedAgainstAFunctionalRequest) {
   const Instruction sit = interpretInstruction("somewhere to sit", P);
   for (const char* seat : {"sofa", "chair", "office chair", "stool"}) EXPECT_TRUE(servesRequest(sit, seat)) << seat;
   EXPECT_FALSE(servesRequest(sit, "fridge"));
+  // A dog bed is no place for a person to sleep (ProcTHOR's house_0 has one, and no bed nearer).
+  const Instruction sleep = interpretInstruction("somewhere to sleep", P);
+  EXPECT_TRUE(servesRequest(sleep, "bed"));
+  EXPECT_TRUE(servesRequest(sleep, "guest bed"));
+  EXPECT_FALSE(servesRequest(sleep, "dog bed"));
+  // A light verb and an act ask for what the act needs, when the noun names no category: WordNet's
+  // first artifact "bath" is a laboratory vessel, its act "you soak and wash your body in a bathtub".
+  EXPECT_EQ(targets("I want to take a bath"), std::vector<std::string>{"bathtub"});
+  EXPECT_EQ(targets("take a nap"), std::vector<std::string>{"bed"});
+  EXPECT_EQ(targets("I want to take a shower"), std::vector<std::string>{"shower"});  // a category itself
   EXPECT_FALSE(servesRequest(sit, "toilet paper"));
   // The fridge's own gloss is about its motor; its hypernym's is "white goods in which food can
   // be stored at low temperatures" (was: a bottle, "used for storing drinks").

@@ -128,6 +128,10 @@ TEST(Viewer, ExploreWritesAPageWhoseScriptFindsWhatTheGraphHolds) {
   EXPECT_NE(out.find("bad.csv"), std::string::npos) << out;
   EXPECT_NE(out.find("line 3"), std::string::npos) << out;
   EXPECT_FALSE(fs::exists(dir / "bad.html"));
+  // A missing input is bad input too: exit 2 (not CLI11's own 105), the option named.
+  EXPECT_EQ(test::runCommand(base + "graph view " + (dir / "missing.json").string() + " --out " + (dir / "m.html").string(), &out), 2);
+  EXPECT_NE(out.find("missing.json"), std::string::npos) << out;
+  EXPECT_EQ(test::runCommand(base + "graph view --help", &out), 0);
 
   const nlohmann::json r = runPageScript(page);
   if (r.is_null()) GTEST_SKIP() << "node is not installed: the page's script was not run";

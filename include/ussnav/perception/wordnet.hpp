@@ -50,6 +50,10 @@ std::optional<Sense> lookupNoun(const std::string& word);
 // True when WordNet knows the single word as a verb, after verb morphology ("prints",
 // "watching", "ate" -> print, watch, eat). Instructions use it to tell "to print" from a print.
 bool knownAsVerb(const std::string& word);
+// Definition of the single word's most frequent sense that is an act (lexicographer file
+// noun.act): actGlossOf("bath") = "you soak and wash your body in a bathtub", though the
+// artifact sense lookupNoun() prefers is a laboratory vessel. Empty when it has none.
+std::string actGlossOf(const std::string& word);
 // Definition of the single word's most frequent verb sense, after verb morphology:
 // verbGlossOf("dining") = "have supper; eat dinner". Empty when WordNet has no such verb.
 std::string verbGlossOf(const std::string& word);
