@@ -51,7 +51,9 @@ void runExplore(const ExploreArgs& a) {
   if (r.reasoning.contains("targets")) {
     std::printf("  instruction: targets %s%s (%s)", r.reasoning["targets"].dump().c_str(),
                 r.reasoning.value("room", "").empty() ? "" : (" in the " + r.reasoning.value("room", "")).c_str(),
-                r.reasoning.value("interpreted", "").c_str());
+                r.reasoning.value("interpreted", "") == "functional"
+                    ? "functional; an object seen is also judged against the request"
+                    : r.reasoning.value("interpreted", "").c_str());
     if (r.reasoning.contains("decisions"))
       std::printf("; %s reasoner: %d decisions, %d fallbacks", r.reasoning.value("reasoner", "").c_str(),
                   r.reasoning.value("decisions", 0), r.reasoning.value("fallbacks", 0));
