@@ -73,6 +73,7 @@ void writeEpisode(const std::string& dir, const EpisodeRun& run) {
   for (const char* k : {"world", "goal", "planner", "seed", "success", "spl", "path_length_m", "shortest_path_m",
                         "time_s", "end_reason", "found_object", "split"})
     ov.episode[k] = r[k];
+  if (r["reasoning"].is_object() && r["reasoning"].contains("choices")) ov.episode["choices"] = r["reasoning"]["choices"];
   writeSceneGraphHtml(d / "scene_graph.html", run.graph, ov);
   writePng(d / "topdown.png", run.topdown);
   writeJsonAtomic(d / "result.json", toJson(run.result));  // last: its presence marks a complete run

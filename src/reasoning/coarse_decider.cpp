@@ -88,6 +88,17 @@ int CoarseDecider::choose(const PlanInput& in, const std::vector<RegionCandidate
   stats_.latency_ms.push_back(d.latency_ms);
   last_query_ = std::move(q);
   last_ = d;
+  const int chosen = d.fault.empty() ? d.region : -1;
+  if (choices_.empty() || choices_.back().region != chosen || choices_.back().fault != d.fault) {
+    if (choices_.size() < kMaxChoices) {
+      double chance = 0.0;
+      for (const auto& sc : d.scores)
+        if (sc.region == chosen) chance = sc.chance;
+      choices_.push_back({in.time, in.uav.position, chosen, chance, d.global_utility, d.fault, d.reason});
+    } else {
+      ++choices_dropped_;
+    }
+  }
   if (!d.fault.empty()) {
     ++stats_.fallbacks;
     ++stats_.faults[d.fault];
@@ -111,7 +122,20 @@ nlohmann::json CoarseDecider::report() const {
           {"fallbacks", stats_.fallbacks},
           {"global_utility", stats_.global_utility},
           {"faults", stats_.faults},
-          {"decision_ms", latencySummary(stats_.latency_ms)}};
+          {"decision_ms", latencySummary(stats_.latency_ms)},
+          {"choices", [&] {
+             nlohmann::json a = nlohmann::json::array();
+             for (const Choice& c : choices_)
+               a.push_back({{"t", std::round(c.t * 10.0) / 10.0},
+                            {"at", {std::round(c.at.x() * 100.0) / 100.0, std::round(c.at.y() * 100.0) / 100.0}},
+                            {"region", c.region},
+                            {"chance", std::round(c.chance * 1000.0) / 1000.0},
+                            {"global_utility", c.global_utility},
+                            {"fault", c.fault},
+                            {"reason", c.reason}});
+             return a;
+           }()},
+          {"choices_dropped", choices_dropped_}};
 }
 
 }  // namespace ussnav

@@ -106,6 +106,36 @@ TEST(CoarseDecider, RateLimitKeepsTheLastRegionWhileItHasFrontiers) {
   EXPECT_EQ(D.stats().kept, 1);
 }
 
+TEST(CoarseDecider, LogsTheChoicesAsTheyChange) {
+  auto r = std::make_shared<ScriptedReasoner>();
+  r->decisions = {decision(7), decision(7), decision(-1, "malformed"), decision(3), decision(3)};
+  r->decisions[0].reason = "region 7 (bedroom): chance 0.80";
+  r->decisions[0].scores = {{7, 0.8, 1.0}, {3, 0.1, 0.5}};
+  CoarseDecider D(r, nullptr, Instruction{}, ReasoningConfig{});
+  D.setScene({summary(3, {}), summary(7, {})}, {});
+  const std::vector<RegionCandidate> cands{{3, 2, 50.0, 4.0, 12.5}, {7, 1, 10.0, 9.0, 1.1}};
+  PlanInput in;
+  for (int i = 0; i < 5; ++i) {
+    in.time = 2.0 * i;
+    in.uav.position = Vec3(i, 0, 1.2);
+    D.choose(in, cands);
+  }
+  ASSERT_EQ(D.choices().size(), 3u);  // 7, the fault, 3: repeats are not logged
+  EXPECT_EQ(D.choices()[0].region, 7);
+  EXPECT_DOUBLE_EQ(D.choices()[0].chance, 0.8);
+  EXPECT_EQ(D.choices()[0].reason, "region 7 (bedroom): chance 0.80");
+  EXPECT_EQ(D.choices()[1].region, -1);
+  EXPECT_EQ(D.choices()[1].fault, "malformed");
+  EXPECT_DOUBLE_EQ(D.choices()[1].t, 4.0);
+  EXPECT_EQ(D.choices()[2].region, 3);
+  EXPECT_EQ(D.choices()[2].at, Vec3(3, 0, 1.2));
+  const nlohmann::json rep = D.report();
+  ASSERT_EQ(rep["choices"].size(), 3u);
+  EXPECT_EQ(rep["choices"][1]["fault"], "malformed");
+  EXPECT_EQ(rep["choices"][2]["at"], nlohmann::json({3.0, 0.0}));
+  EXPECT_EQ(rep["choices_dropped"], 0);
+}
+
 TEST(RegionLabeler, CachesByContentAndRateLimits) {
   auto r = std::make_shared<ScriptedReasoner>();
   RegionLabeler L(r, 2.0, 16, false);

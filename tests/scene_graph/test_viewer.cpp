@@ -37,6 +37,8 @@ size_t count(const std::string& s, const std::string& what) {
   return n;
 }
 
+nlohmann::json runPageScript(const fs::path& page);
+
 TEST(Viewer, PageEmbedsTheGraphAndNoLabelEndsTheScript) {
   SceneGraph g;
   g.source = "hand";
@@ -76,6 +78,24 @@ TEST(Viewer, PageEmbedsTheGraphAndNoLabelEndsTheScript) {
   EXPECT_EQ(d["trajectory"].size(), 2u);
   EXPECT_TRUE(d["episode"].is_null());
   EXPECT_TRUE(d["rooms"].empty());
+
+  // An episode's coarse decisions, listed and clickable (the page's script, under node).
+  ov.episode = {{"goal", "bed"}, {"success", true}, {"spl", 0.5}, {"end_reason", "found"},
+                {"choices", {{{"t", 1.5}, {"at", {0.5, 0.5}}, {"region", 7}, {"chance", 0.42}, {"global_utility", false},
+                              {"fault", ""}, {"reason", "why 7"}},
+                             {{"t", 9.0}, {"at", {3.0, 2.0}}, {"region", -1}, {"chance", 0.0}, {"global_utility", false},
+                              {"fault", "malformed"}, {"reason", ""}}}}};
+  const fs::path file = test::tempDir("viewer_hand") / "hand.html";
+  writeSceneGraphHtml(file, g, ov);
+  const nlohmann::json r = runPageScript(file);
+  if (r.is_null()) GTEST_SKIP() << "node is not installed: the page's script was not run";
+  ASSERT_TRUE(r.is_object());
+  EXPECT_EQ(r["ui"]["choices"], 2);
+  EXPECT_EQ(r["ui"]["choiceLines"][0], "t 1.5 s: region 7 (bed</script><b>room), chance 0.42");
+  EXPECT_EQ(r["ui"]["choiceLines"][1], "t 9.0 s: global utility (malformed)");
+  EXPECT_EQ(r["ui"]["choiceInfo"][0].get<std::string>().rfind("region 7 (bed</script><b>room): 2 nodes", 0), 0u)
+      << r["ui"]["choiceInfo"];
+  EXPECT_EQ(r["ui"]["choiceInfo"].back(), "why 7");
 }
 
 // The JSON report of tests/scene_graph/viewer_check.js on `page`, or null without node.
@@ -199,6 +219,21 @@ TEST(Viewer, ExploreWritesAPageWhoseScriptFindsWhatTheGraphHolds) {
   EXPECT_EQ(ui["clickedInfo"][0].get<std::string>().rfind("object ", 0), 0u) << ui["clickedInfo"];
   const std::string picked = objects.at(r["objectPicks"][0][2].get<int>())["label"];
   EXPECT_NE(ui["clickedInfo"][0].get<std::string>().find(picked), std::string::npos) << ui["clickedInfo"];
+
+  // The coarse level's choices: result.json has them, the page lists them, a click on the first
+  // describes the region it chose.
+  const auto& choices = result["reasoning"]["choices"];
+  ASSERT_TRUE(choices.is_array());
+  EXPECT_EQ(ui["choices"], choices.size());
+  EXPECT_EQ(r["episode"]["choices"], choices);
+  const int first = choices.empty() ? -1 : choices[0]["region"].get<int>();
+  if (first >= 0) {
+    EXPECT_NE(ui["choiceLines"][0].get<std::string>().find("region " + std::to_string(first)), std::string::npos)
+        << ui["choiceLines"][0];
+    EXPECT_EQ(ui["choiceInfo"][0].get<std::string>().rfind("region " + std::to_string(first), 0), 0u) << ui["choiceInfo"];
+  }
+  for (size_t i = 1; i < choices.size(); ++i)  // logged as they change
+    EXPECT_TRUE(choices[i]["region"] != choices[i - 1]["region"] || choices[i]["fault"] != choices[i - 1]["fault"]);
 
   const nlohmann::json v = runPageScript(dir / "view.html");
   ASSERT_TRUE(v.is_object());

@@ -58,7 +58,9 @@ const ctx = new Proxy({}, {
 });
 function element(tag, id) {
   const e = {
-    tagName: (tag || "div").toUpperCase(), id, textContent: "", className: "", style: {}, children: [],
+    tagName: (tag || "div").toUpperCase(), id, text: "", className: "", style: {}, children: [],
+    get textContent() { return this.text; },
+    set textContent(v) { this.text = v; this.children = []; },  // as in a browser: the children go
     listeners: {}, checked: false, type: "", value: "",
     appendChild(c) { this.children.push(c); return c; },
     addEventListener(type, fn) { (this.listeners[type] = this.listeners[type] || []).push(fn); },
@@ -114,6 +116,14 @@ if (data.objects.length) {
   fire(byId.view.listeners.mousedown, { offsetX: px, offsetY: py });
   fire(windowListeners.mouseup, { offsetX: px, offsetY: py, target: byId.view });
   report.ui.clickedInfo = byId.info.children.map((c) => c.textContent);
+}
+// The episode's coarse decisions: one item each; a click selects the region chosen.
+const choices = byId.episode.children.find((c) => c.id === "choices");
+report.ui.choices = choices ? choices.children.length : 0;
+report.ui.choiceLines = choices ? choices.children.map((c) => c.textContent) : [];
+if (choices && choices.children.length) {
+  fire(choices.children[0].listeners.click, {});
+  report.ui.choiceInfo = byId.info.children.map((c) => c.textContent);
 }
 // Toggle every layer off and on again (each redraws).
 for (const l of byId.layers.children) {

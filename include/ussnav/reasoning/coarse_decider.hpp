@@ -41,6 +41,19 @@ class CoarseDecider {
     std::map<std::string, int> faults;  // by kind
     std::vector<double> latency_ms;
   };
+  // The coarse level's choices as they changed (one entry each time the region chosen, or a
+  // fault, differs from the last): when, where the UAV was, the region and why. For the episode's
+  // page (scene_graph.html) and result.json; the first kMaxChoices are kept.
+  struct Choice {
+    double t = 0.0;
+    Vec3 at = Vec3::Zero();
+    int region = -1;  // -1: a fault, answered by global utility
+    double chance = 0.0;
+    bool global_utility = false;
+    std::string fault, reason;
+  };
+  static constexpr size_t kMaxChoices = 300;
+  const std::vector<Choice>& choices() const { return choices_; }
   const Stats& stats() const { return stats_; }
   const CoarseQuery& lastQuery() const { return last_query_; }
   const CoarseDecision& lastDecision() const { return last_; }
@@ -60,6 +73,8 @@ class CoarseDecider {
   CoarseQuery last_query_;
   CoarseDecision last_;
   Stats stats_;
+  std::vector<Choice> choices_;
+  int choices_dropped_ = 0;
 };
 
 // {median, p95, count} of a sample (core/timing.hpp percentile; 0s when empty).
