@@ -213,9 +213,11 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
     size_t k = size_t(at - words.begin());
     while (k > 0 && (words[k - 1] == "a" || words[k - 1] == "an" || words[k - 1] == "the")) --k;
     const bool after_light_verb = at != words.end() && k > 0 && lightVerbs().count(words[k - 1]);
-    const bool names_category = std::any_of(P.categories().begin(), P.categories().end(),
-                                            [&](const std::string& c) { return enc.similarity(named, c) >= 0.85; });
-    if (after_light_verb && !names_category) act = instructionWords(wordnet::actGlossOf(named));
+    const auto names_category = [&] {
+      return std::any_of(P.categories().begin(), P.categories().end(),
+                         [&](const std::string& c) { return enc.similarity(named, c) >= 0.85; });
+    };
+    if (after_light_verb && !names_category()) act = instructionWords(wordnet::actGlossOf(named));
   }
   if (!act.empty()) {
     named.clear();
