@@ -19,6 +19,7 @@ PACKAGES=(
   liboctomap-dev           # real Freiburg scans + benchmark reference
   libassimp-dev            # COLLADA wall meshes of the AWS Gazebo worlds
   libpng-dev zlib1g-dev    # pictures and 2D maps
+  nodejs                   # tests run the web pages' own scripts (scene_graph.html, index.html)
 )
 
 missing=()
