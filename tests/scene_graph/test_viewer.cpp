@@ -185,6 +185,13 @@ TEST(Viewer, ExploreWritesAPageWhoseScriptFindsWhatTheGraphHolds) {
     }
   }
   EXPECT_EQ(r["farPick"], "none");
+  for (const auto& k : r["bandPicks"]) EXPECT_NE(k, "node");  // no node centre in the band
+  // The page's band starts around every node centre; a band above them all draws no polyhedron.
+  double zlo = 1e9, zhi = -1e9;
+  for (const SgNode& n : g.nodes) zlo = std::min(zlo, n.centroid.z()), zhi = std::max(zhi, n.centroid.z());
+  EXPECT_LE(r["ui"]["band"][0].get<double>(), zlo);
+  EXPECT_GE(r["ui"]["band"][1].get<double>(), zhi);
+  EXPECT_GE(r["ui"]["fillsWithoutBand"].get<int>(), r["ui"]["fillsWithBand"].get<int>() + int(g.nodes.size()));
   // A click at an object's centre picks an object whose box holds that point (the smallest).
   for (const auto& p : r["objectPicks"]) {
     ASSERT_EQ(p[1], "object") << "object " << p[0];

@@ -40,6 +40,9 @@ report.nodePicks = data.nodes.map((n) => {
   const h = V.pick(idx, n.c[0], n.c[1]);
   return h ? [n.id, h.kind, h.item.id] : [n.id, "none", -1];
 });
+// A height band that holds no node centre: no node can be picked.
+const above = Object.assign({}, idx, { band: [1e3, 1e3 + 1] });
+report.bandPicks = data.nodes.map((n) => { const h = V.pick(above, n.c[0], n.c[1]); return h ? h.kind : "none"; });
 const far = V.pick(idx, idx.bounds[2] + 50, idx.bounds[3] + 50);
 report.farPick = far ? far.kind : "none";
 report.search = {};
@@ -73,7 +76,7 @@ function element(tag, id) {
   return e;
 }
 const byId = {};
-for (const id of ["title", "summary", "episode", "layers", "search", "matches", "info", "fit", "cursor"])
+for (const id of ["title", "summary", "episode", "layers", "search", "matches", "info", "fit", "cursor", "band", "zmin", "zmax", "save"])
   byId[id] = element(id === "search" ? "input" : "div", id);
 byId.view = element("canvas", "view");
 byId.regions = element("div", "regions");
@@ -124,6 +127,17 @@ report.ui.choiceLines = choices ? choices.children.map((c) => c.textContent) : [
 if (choices && choices.children.length) {
   fire(choices.children[0].listeners.click, {});
   report.ui.choiceInfo = byId.info.children.map((c) => c.textContent);
+}
+// A height band above every node: the polyhedra are no longer drawn.
+if (data.nodes.length) {
+  report.ui.band = [byId.zmin.value, byId.zmax.value];
+  const before = calls.fill || 0;
+  byId.zmin.value = "1000"; byId.zmax.value = "1001";
+  fire(byId.zmin.listeners.change);
+  report.ui.fillsWithBand = (calls.fill || 0) - before;
+  byId.zmin.value = String(report.ui.band[0]); byId.zmax.value = String(report.ui.band[1]);
+  fire(byId.zmax.listeners.change);
+  report.ui.fillsWithoutBand = (calls.fill || 0) - before - report.ui.fillsWithBand;
 }
 // Toggle every layer off and on again (each redraws).
 for (const l of byId.layers.children) {
