@@ -1,6 +1,5 @@
 #include "ussnav/episode/episode_drawing.hpp"
 
-#include <algorithm>
 #include <cstdio>
 
 #include "ussnav/scene_graph/drawing.hpp"
@@ -59,18 +58,8 @@ ViewerOverlay worldOverlay(const World& world, const std::vector<const Object*>&
   for (const Room& r : world.rooms) ov.rooms.push_back({r.id, r.type, r.polygon});
   for (const Wall& w : world.walls) {
     const double len = (w.b - w.a).norm();
-    if (len < 1e-9) continue;
-    const Vec2 d = (w.b - w.a) / len;
-    std::vector<std::pair<double, double>> doors;
-    for (const Opening& op : w.openings)
-      if (op.bottom < 0.3) doors.emplace_back(std::clamp(op.start, 0.0, len), std::clamp(op.end, 0.0, len));
-    std::sort(doors.begin(), doors.end());
-    double s = 0.0;
-    for (const auto& [d0, d1] : doors) {
-      if (d0 > s + 1e-6) ov.walls.push_back({w.a + d * s, w.a + d * d0});
-      s = std::max(s, d1);
-    }
-    if (len > s + 1e-6) ov.walls.push_back({w.a + d * s, w.b});
+    for (const auto& [s0, s1] : solidRuns(w, doorOpening))
+      ov.walls.push_back({w.a + (w.b - w.a) * (s0 / len), w.a + (w.b - w.a) * (s1 / len)});
   }
   for (const Object* o : goal_instances) {
     const auto c = footprintCorners(o->box);

@@ -65,4 +65,21 @@ bool footprintInsidePolygon(const OrientedBox& b, const std::vector<Vec2>& poly,
   return true;
 }
 
+std::vector<std::pair<double, double>> solidRuns(const Wall& w, bool (*cut)(const Opening&)) {
+  const double len = (w.b - w.a).norm();
+  std::vector<std::pair<double, double>> runs;
+  if (len < 1e-9) return runs;
+  std::vector<std::pair<double, double>> gaps;
+  for (const Opening& op : w.openings)
+    if (cut(op)) gaps.emplace_back(std::clamp(op.start, 0.0, len), std::clamp(op.end, 0.0, len));
+  std::sort(gaps.begin(), gaps.end());
+  double s = 0.0;
+  for (const auto& [g0, g1] : gaps) {
+    if (g0 - s >= 1e-6) runs.push_back({s, g0});
+    s = std::max(s, g1);
+  }
+  if (len - s >= 1e-6) runs.push_back({s, len});
+  return runs;
+}
+
 }  // namespace ussnav

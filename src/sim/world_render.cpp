@@ -132,12 +132,7 @@ Image renderWorld(const World& w, const RenderOptions& opt) {
     if (len < 1e-9) continue;
     const Vec2 d = (wl.b - wl.a) / len, n(-d.y(), d.x());
     const Vec2 h = n * (0.5 * wl.thickness);
-    std::vector<std::pair<double, double>> gaps;
-    for (const auto& op : wl.openings) gaps.emplace_back(std::clamp(op.start, 0.0, len), std::clamp(op.end, 0.0, len));
-    std::sort(gaps.begin(), gaps.end());
-    double s = 0;
-    auto solid = [&](double s0, double s1) {
-      if (s1 - s0 < 1e-6) return;
+    for (const auto& [s0, s1] : solidRuns(wl, anyOpening)) {
       const Vec2 p0 = wl.a + d * s0, p1 = wl.a + d * s1;
       img.fillPolygon(px({p0 - h, p1 - h, p1 + h, p0 + h}), kWall);
       // Thin walls would vanish below a pixel; keep at least a 2-px line.
@@ -145,12 +140,7 @@ Image renderWorld(const World& w, const RenderOptions& opt) {
         const Vec2 q0 = v.toPx(p0), q1 = v.toPx(p1);
         img.line(q0.x(), q0.y(), q1.x(), q1.y(), kWall, 2);
       }
-    };
-    for (const auto& [g0, g1] : gaps) {
-      solid(s, g0);
-      s = std::max(s, g1);
     }
-    solid(s, len);
     for (const auto& op : wl.openings) {
       const Vec2 q0 = v.toPx(Vec2(wl.a + d * op.start)), q1 = v.toPx(Vec2(wl.a + d * op.end));
       const bool window = op.bottom > 0.3;

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "ussnav/sim/floorplan_generator.hpp"
+#include "ussnav/sim/layout_geometry.hpp"
 #include "ussnav/sim/world_render.hpp"
 #include "ussnav/sim/world_stats.hpp"
 
@@ -103,4 +104,20 @@ TEST(WorldRender, ObstacleVoxelWorldIsDrawnAsMaxProjection) {
   EXPECT_LT(t[0], l[0]) << "the taller column is darker";
   EXPECT_LT(l[0], 255);
   EXPECT_EQ(img.at(int(empty.x()), int(empty.y())), (Rgb{255, 255, 255}));
+}
+
+// A wall's solid runs, as the top-down picture and the web page draw them: overlapping
+// openings merge, an opening past the wall's end is clamped, windows stay solid for doors only.
+TEST(WallRuns, OpeningsAreCutOutMergedAndClamped) {
+  Wall w;
+  w.a = Vec2(0, 0);
+  w.b = Vec2(10, 0);
+  w.openings = {{2.0, 3.0, 0.0, 2.1}, {2.5, 4.0, 0.0, 2.1}, {6.0, 7.0, 1.0, 2.0}, {9.0, 12.0, 0.0, 2.1}};
+  using Runs = std::vector<std::pair<double, double>>;
+  EXPECT_EQ(solidRuns(w, anyOpening), (Runs{{0, 2}, {4, 6}, {7, 9}}));
+  EXPECT_EQ(solidRuns(w, doorOpening), (Runs{{0, 2}, {4, 9}}));
+  w.openings.clear();
+  EXPECT_EQ(solidRuns(w, doorOpening), (Runs{{0, 10}}));
+  w.b = w.a;
+  EXPECT_TRUE(solidRuns(w, anyOpening).empty());
 }

@@ -5,6 +5,7 @@
 // returned corner arrays.
 
 #include <array>
+#include <utility>
 #include <vector>
 
 #include "ussnav/sim/world.hpp"
@@ -34,5 +35,13 @@ bool footprintInsidePolygon(const OrientedBox& b, const std::vector<Vec2>& poly,
 
 // Distance from p to the box footprint (0 inside).
 double distanceToFootprint(const Vec2& p, const OrientedBox& b);
+
+// The solid runs of a wall, as [start, end] metres along it from `a`, once the openings that
+// `cut` accepts are taken out (sorted, clamped to the wall, merged where they overlap). A wall
+// shorter than 1e-9 m has none. O(openings log openings).
+std::vector<std::pair<double, double>> solidRuns(const Wall& w, bool (*cut)(const Opening&));
+// The `cut` for every opening, and for doors only (an opening reaching below 0.3 m).
+inline bool anyOpening(const Opening&) { return true; }
+inline bool doorOpening(const Opening& o) { return o.bottom < 0.3; }
 
 }  // namespace ussnav
