@@ -71,6 +71,7 @@ class Db {
     depth_.clear();
     ancestors_.clear();
     nouns_.clear();
+    kin.clear();
     return openLocked();
   }
 
@@ -187,6 +188,9 @@ class Db {
   std::unordered_map<long, int> depth_;
   std::unordered_map<long, std::vector<long>> ancestors_;
   std::unordered_map<std::string, std::vector<long>> nouns_;
+
+ public:
+  std::unordered_map<std::string, VerbKin> kin;  // verbKin() answers, by lower-case word
 };
 
 std::string lower(std::string s) {
@@ -273,7 +277,18 @@ std::optional<Sense> lookupNounLocked(Db& db, const std::string& raw) {
       }
     }
   if (offs.empty()) return std::nullopt;
-  return makeSense(db, chooseSense(db, offs, word));
+  long best = chooseSense(db, offs, word);
+  // A plural that WordNet also lists as a word of its own in no physical sense ("shoes": "a
+  // particular situation", as in someone's shoes) means the thing its base form names.
+  if (!db.hasAncestor(best, db.physical))
+    for (const auto& base : db.baseForms(word))
+      if (base != word)
+        if (const auto b = db.senses(base); !b.empty())
+          if (const long off = chooseSense(db, b, base); db.hasAncestor(off, db.physical) && !db.isPlace(off)) {
+            best = off;
+            break;
+          }
+  return makeSense(db, best);
 }
 
 struct Resolved {
@@ -428,6 +443,65 @@ std::string verbGlossOf(const std::string& word) {
         return {};
       },
       std::string());
+}
+
+namespace {
+
+// Adds the words of synset (pos, offset) to `out`: all of them, or only the `which`-th (1-based).
+void addSynsetWords(int pos, long offset, int which, std::vector<std::string>& out) {
+  char empty[1] = {0};
+  SynsetPtr s = read_synset(pos, offset, empty);
+  if (!s) return;
+  for (int i = 0; i < s->wcount; ++i)
+    if (which <= 0 || which == i + 1) {
+      std::string w = underscoresToSpaces(lower(s->words[i]));
+      if (std::find(out.begin(), out.end(), w) == out.end()) out.push_back(std::move(w));
+    }
+  free_synset(s);
+}
+
+VerbKin verbKinLocked(const std::string& v) {
+  VerbKin k;
+  std::vector<char> buf(v.begin(), v.end());
+  buf.push_back('\0');
+  IndexPtr idx = index_lookup(buf.data(), VERB);
+  if (!idx) return k;
+  char empty[1] = {0};
+  for (int sense = 0; sense < std::min(idx->off_cnt, 2); ++sense) {
+    SynsetPtr s = read_synset(VERB, idx->offset[sense], empty);
+    if (!s) continue;
+    if (sense == 0) addSynsetWords(VERB, idx->offset[0], 0, k.verbs);
+    for (int i = 0; i < s->ptrcount; ++i) {
+      if (sense == 0 && s->ptrtyp[i] == HYPERPTR && s->ppos[i] == VERB) addSynsetWords(VERB, s->ptroff[i], 1, k.verbs);
+      // A derivation is lexical: from one word of this synset to one of the other's.
+      if (s->ptrtyp[i] == DERIVATION && s->ppos[i] == NOUN) addSynsetWords(NOUN, s->ptroff[i], s->pto[i], k.nouns);
+    }
+    free_synset(s);
+  }
+  free_index(idx);
+  return k;
+}
+
+}  // namespace
+
+VerbKin verbKin(const std::string& word) {
+  const std::string w = lower(word);
+  if (w.empty() || w.size() >= WORDBUF - 1 || w.find(' ') != std::string::npos) return {};
+  return withDb(
+      [&](Db& db) -> VerbKin {
+        if (const auto it = db.kin.find(w); it != db.kin.end()) return it->second;
+        VerbKin k = verbKinLocked(w);
+        if (k.verbs.empty()) {
+          std::vector<char> buf(w.begin(), w.end());
+          buf.push_back('\0');
+          std::vector<std::string> bases;
+          for (char* m = morphstr(buf.data(), VERB); m; m = morphstr(nullptr, VERB)) bases.emplace_back(m);
+          for (const auto& b : bases)
+            if (k = verbKinLocked(b); !k.verbs.empty()) break;
+        }
+        return db.kin.emplace(w, std::move(k)).first->second;
+      },
+      VerbKin{});
 }
 
 bool namesAnimal(const std::string& word) {

@@ -66,25 +66,71 @@ std::set<std::string> stems(const std::string& text) {
   return out;
 }
 
+// A closed compound's parts, when both are WordNet nouns of four letters or more: a bookshelf
+// is named for books and a coatrack for coats ("carpet" and "cupboard" stay whole).
+std::vector<std::string> compoundParts(const std::string& word) {
+  for (size_t k = 4; k + 4 <= word.size(); ++k) {
+    const std::string head = word.substr(0, k), tail = word.substr(k);
+    if (wordnet::lookupNoun(head) && wordnet::lookupNoun(tail))
+      return {head, tail};
+  }
+  return {};
+}
+
+// Verbs too general to stand for another act: "eat" is to "take in", "relax" to "turn".
+bool generalVerb(const std::string& w) {
+  static const std::set<std::string> g{"make", "move", "change", "put", "set", "cause", "act",
+                                       "hold", "give", "be",   "turn", "become"};
+  return g.count(w) || g.count(stemWord(w)) || fillers().count(w) || lightVerbs().count(w);
+}
+
+// The verb a stem stands for: the request keeps stems ("stor" for "store", "sit" for "sitting").
+std::string verbOfStem(const std::string& stem) {
+  return wordnet::knownAsVerb(stem) || !wordnet::knownAsVerb(stem + "e") ? stem : stem + "e";
+}
+
+// Stems of the single-word verbs that name a verb's act (wordnet::verbKin), general ones dropped.
+std::set<std::string> kinVerbStems(const std::string& verb) {
+  std::set<std::string> out;
+  for (const auto& v : wordnet::verbKin(verb).verbs)
+    if (v.find(' ') == std::string::npos && !generalVerb(v)) out.insert(stemWord(v));
+  return out;
+}
+
+struct RequestMatch {
+  double score = 0.0;
+  bool verb = false;    // a verb of the request found (the act)
+  bool object = false;  // a word of the request that is no verb found (what the act is on)
+  bool purpose = false;  // a verb found in what the gloss says the thing is for, not in its name
+};
+
 // Step 3's score of one name against the request's stemmed content words `want` (of them
-// `verbs` stand as verbs): 2 per word in the name or its synonyms, 1.5 per purpose ("a place TO
-// SLEEP", "used FOR COOKING"), 1 per other mention, in the name's WordNet gloss, its nearest
-// hypernym's gloss (a chair is "a seat", a seat "furniture that is designed for sitting on") and
-// `extra_text`; an -ing word of the name adds its verb's gloss as purposes ("dining" table: to
-// dine is to "eat dinner"). A verb of the request counts in a gloss only where the gloss uses it
-// as a verb: a purpose, an -ing / -ed form, after "can" ("where several people can SIT"); a book
-// is "a written work", not somewhere to work. `object` false (room types, scored on our own
-// descriptions, written as purposes): no hypernym, no verb glosses.
-double requestScore(const std::set<std::string>& want, const std::set<std::string>& verbs, const std::string& name,
-                    const std::string& extra_text, bool object) {
+// `verbs` stand as verbs): 2 per word in the name, its synonyms or a closed compound's parts
+// (book-shelf), 1.5 per purpose ("a place TO SLEEP", "used FOR COOKING"), 1 per other mention,
+// in the name's WordNet gloss, its nearest hypernym's gloss (a chair is "a seat", a seat
+// "furniture that is designed for sitting on") and `extra_text`; an -ing word of the name adds
+// its verb's gloss as purposes ("dining" table: to dine is to "eat dinner"). A verb of the
+// request counts in a gloss only where the gloss uses it as a verb: a purpose, an -ing / -ed
+// form, after "can" ("where several people can SIT"); a book is "a written work", not somewhere
+// to work. Failing those, 1 where the gloss names the act in other words (wordnet::verbKin: a
+// dresser is "for KEEPING clothes" and to store is to keep; a refrigerator is where food "can be
+// STORED" for "keep food cold"; a wardrobe "provides STORAGE"). A name that answers both the act
+// and what it is on gets 0.5 more ("store clothes": a dresser, not a clothes dryer).
+// `object` false (room types, scored on our own descriptions, written as purposes): no
+// hypernym, no verb glosses, no kin.
+RequestMatch matchRequest(const std::set<std::string>& want, const std::set<std::string>& verbs,
+                          const std::string& name, const std::string& extra_text, bool object) {
   std::string synonyms;
   for (const auto& syn : wordnet::synonymsOf(name)) synonyms += syn + " ";
-  const std::set<std::string> name_words = stems(name + " " + synonyms);
+  std::set<std::string> name_words = stems(name + " " + synonyms);
+  if (object)
+    for (const auto& w : instructionWords(name))
+      for (const auto& part : compoundParts(w)) name_words.insert(stemWord(part));
   std::string gloss = wordnet::glossOf(name) + " " + extra_text;
   if (object)
     if (const auto h = wordnet::hypernymsOf(name); !h.empty()) gloss += " ; " + wordnet::glossOf(h.front());
   const std::set<std::string> gloss_words = stems(gloss), extra_words = stems(extra_text);
-  std::set<std::string> purposes, verb_forms;
+  std::set<std::string> purposes, verb_forms, acts;  // acts: the gloss's verbs as written
   // A name with an -ing word says what the thing is for: a dining table is for dining, and to
   // dine is to "have supper; eat dinner".
   if (object)
@@ -93,21 +139,47 @@ double requestScore(const std::set<std::string>& want, const std::set<std::strin
         for (const auto& p : stems(wordnet::verbGlossOf(w))) purposes.insert(p);
   const auto g = instructionWords(gloss);
   for (size_t i = 0; i < g.size(); ++i) {
-    if (i + 1 < g.size() && (g[i] == "to" || g[i] == "for")) purposes.insert(stemWord(g[i + 1]));
+    if (i + 1 < g.size() && (g[i] == "to" || g[i] == "for")) purposes.insert(stemWord(g[i + 1])), acts.insert(g[i + 1]);
     const auto ends = [&](const char* x) { return g[i].size() > 4 && g[i].ends_with(x); };
-    if (ends("ing") || ends("ed")) verb_forms.insert(stemWord(g[i]));
+    if (ends("ing") || ends("ed")) verb_forms.insert(stemWord(g[i])), acts.insert(g[i]);
     if (i + 1 < g.size() && (g[i] == "can" || g[i] == "could" || g[i] == "may" || g[i] == "will"))
-      verb_forms.insert(stemWord(g[i + 1]));  // "where several people can SIT"
+      verb_forms.insert(stemWord(g[i + 1])), acts.insert(g[i + 1]);  // "where several people can SIT"
   }
-  double s = 0.0;
-  for (const auto& w : want)
-    s += name_words.count(w) ? 2.0
-         : purposes.count(w) ? 1.5
-         : extra_words.count(w) || (gloss_words.count(w) && (!verbs.count(w) || verb_forms.count(w))) ? 1.0
-                              : 0.0;
+  const auto kin = [&](const std::string& w) {
+    if (!object || !verbs.count(w)) return false;
+    const std::string verb = verbOfStem(w);
+    for (const auto& k : kinVerbStems(verb))
+      if (purposes.count(k) || verb_forms.count(k)) return true;
+    for (const auto& n : wordnet::verbKin(verb).nouns)  // not the verb's own noun: a book is "a written work"
+      if (n.find(' ') == std::string::npos && stemWord(n) != w && gloss_words.count(stemWord(n))) return true;
+    for (const auto& a : acts)
+      if (!generalVerb(a) && kinVerbStems(a).count(w)) return true;
+    return false;
+  };
+  RequestMatch m;
+  int kin_verbs = 0;
+  for (const auto& w : want) {
+    const double s = name_words.count(w) ? 2.0
+                     : purposes.count(w) ? 1.5
+                     : extra_words.count(w) || (gloss_words.count(w) && (!verbs.count(w) || verb_forms.count(w))) ? 1.0
+                                                                                                               : 0.0;
+    m.score += s;
+    if (s > 0.0) (verbs.count(w) ? m.verb : m.object) = true;
+    if (s > 0.0 && s < 2.0 && verbs.count(w)) m.purpose = true;
+    if (s == 0.0 && kin(w)) ++kin_verbs;
+  }
+  // The act in other words counts only beside what it is on: a bottle "can be capped", and to
+  // cap is to "lie at the top of", but it is no place to lie down.
+  if (m.object && kin_verbs > 0) m.score += kin_verbs, m.verb = m.purpose = true;
+  if (object && m.verb && m.object) m.score += 0.5;
   // A compound known only by its head noun ("dog bed" -> bed) ranks after the head itself.
-  if (const auto r = wordnet::resolveLabel(name); r && !r->modifiers.empty()) s *= 0.9;
-  return s;
+  if (const auto r = wordnet::resolveLabel(name); r && !r->modifiers.empty()) m.score *= 0.9;
+  return m;
+}
+
+double requestScore(const std::set<std::string>& want, const std::set<std::string>& verbs, const std::string& name,
+                    const std::string& extra_text, bool object) {
+  return matchRequest(want, verbs, name, extra_text, object).score;
 }
 
 }  // namespace
@@ -128,6 +200,9 @@ std::vector<std::string> instructionWords(const std::string& text) {
 }
 
 std::string stemWord(const std::string& w) {
+  // "Clothes" is no plural of "cloth" (that is "cloths"): clothes and clothing meet, a cloth
+  // (a shower curtain is a "hanging cloth") stays apart.
+  if (w == "clothes" || w == "clothing" || w == "clothe") return "clothes";
   auto ends = [&](const std::string& s) { return w.size() > s.size() + 2 && w.compare(w.size() - s.size(), s.size(), s) == 0; };
   std::string s = w;
   if (ends("ing")) s = w.substr(0, w.size() - 3);
@@ -247,9 +322,14 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   std::vector<std::string> vocab = P.categories();
   for (const auto& v : extra_vocabulary)
     if (std::find(vocab.begin(), vocab.end(), v) == vocab.end()) vocab.push_back(v);
+  // A request that names what the act is on ("store CLOTHES", "watch TV") is answered only by
+  // things that name it too: a watch is no place to watch tv, nor a dresser ("for keeping
+  // clothes") one to keep shoes. Without any such thing, anything answering the act is kept.
+  const auto on_object = [&](const std::string& v) { return matchRequest(want, verbs, v, "", true).object; };
+  I.object_named = !named.empty() && std::any_of(vocab.begin(), vocab.end(), on_object);
   std::vector<std::pair<double, std::string>> scored;
   for (const auto& v : vocab)
-    if (const double s = score(v, ""); s > 0.0) scored.push_back({s, v});
+    if (const double s = score(v, ""); s > 0.0 && (!I.object_named || on_object(v))) scored.push_back({s, v});
   // Best first; among equals the shorter name ("shower" before "shower curtain").
   const auto words_in = [](const std::string& x) { return std::count(x.begin(), x.end(), ' '); };
   std::stable_sort(scored.begin(), scored.end(), [&](const auto& a, const auto& b) {
@@ -264,8 +344,20 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   }
   // With a verb, the object named stays the target unless a category answers the verb and the
   // object together better than the object's own name ("wash clothes" -> washing machine, "a
-  // home appliance for washing clothes"; "read a book" -> book; "watch tv" -> tv).
-  if (!named.empty() && (scored.empty() || scored.front().first <= score(named, ""))) {
+  // home appliance for washing clothes"; "read a book" -> book; "watch tv" -> tv). Asked for a
+  // place ("somewhere to hang my coat", "where can I store clothes"), the object named is what
+  // the act is on and only one candidate: the request is judged, so a coat rack, a wardrobe or
+  // a bookshelf seen serves it though the priors' vocabulary has none.
+  const bool place = std::any_of(words.begin(), words.end(), [](const std::string& w) {
+    return w == "somewhere" || w == "anywhere" || w == "place" || w == "where" || w == "spot";
+  });
+  if (!named.empty() && place) {
+    if (std::none_of(scored.begin(), scored.end(), [&](const auto& x) { return stems(x.second) == stems(named); })) {
+      const double own = score(named, "");
+      const auto at = std::find_if(scored.begin(), scored.end(), [&](const auto& x) { return x.first <= own; });
+      scored.insert(at, {own, named});
+    }
+  } else if (!named.empty() && (scored.empty() || scored.front().first <= score(named, ""))) {
     I.targets.push_back(named);
     I.how = "named";
     return I;
@@ -290,24 +382,39 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   return I;
 }
 
-double requestScore(const Instruction& I, const std::string& label) {
-  if (I.how != "functional") return 0.0;
+namespace {
+RequestMatch matchRequest(const Instruction& I, const std::string& label) {
   const std::set<std::string> want(I.request.begin(), I.request.end()), verbs(I.request_verbs.begin(), I.request_verbs.end());
-  return requestScore(want, verbs, label, "", true);
+  return matchRequest(want, verbs, label, "", true);
+}
+}  // namespace
+
+double requestScore(const Instruction& I, const std::string& label) {
+  return I.how == "functional" ? matchRequest(I, label).score : 0.0;
 }
 
 bool servesRequest(const Instruction& I, const std::string& label) {
   if (I.how != "functional" || I.score <= 0.0) return false;
   // A compound known by its head noun scores 0.9 of the head ("office chair"), as in ranking,
   // and serves where its head does, unless a word before the head names an animal: a dog bed is
-  // no place for a person to sleep (as for "find a bed", docs/reasoning.md). (Letting a label
-  // inherit what its hypernyms serve, an armchair being a chair, also let a plunger, a "hand
-  // tool", serve "somewhere to wash my hands".)
+  // no place for a person to sleep (as for "find a bed", docs/reasoning.md).
   double need = I.score;
   if (const auto r = wordnet::resolveLabel(label); r && !r->modifiers.empty() &&
                                                    std::none_of(r->modifiers.begin(), r->modifiers.end(), wordnet::namesAnimal))
     need *= 0.9;
-  return requestScore(I, label) >= need - 1e-9;
+  const RequestMatch m = matchRequest(I, label);
+  if (I.object_named && !m.object) return false;
+  if (m.score >= need - 1e-9) return true;
+  // A kind of a thing that serves the act serves it too: an armchair is a chair, and a chair
+  // serves "somewhere to sit" (a seat is "designed for sitting on"). Only through what its gloss
+  // says it is for: a plunger is a "hand tool", which names the hands but serves no "wash my
+  // hands".
+  // And only for a request its targets answer as a purpose (1.5) at least: a mention of "work"
+  // three glosses up does not make a pen serve "work out".
+  const auto h = wordnet::hypernymsOf(label);
+  if (h.empty() || I.score < 1.5) return false;
+  const RequestMatch up = matchRequest(I, h.front());
+  return up.purpose && (!I.object_named || up.object) && up.score >= I.score - 1e-9;
 }
 
 }  // namespace ussnav

@@ -298,6 +298,60 @@ TEST(Instruction, ObjectsSeenAreJudgedAgainstAFunctionalRequest) {
   EXPECT_DOUBLE_EQ(requestScore(bed, "bed"), 0.0);
 }
 
+// "Somewhere to VERB OBJECT": a place for the act on the object. The objects that answer it are
+// seldom in the priors' vocabulary (a wardrobe, a coat rack, a bookshelf are in none of the
+// tables), so the request is judged; and the act is often written with other words in the
+// gloss (a dresser is "for keeping clothes", a wardrobe "provides storage space for clothes").
+// Before, each of these looked for the object itself: the clothes, the coat, the books.
+TEST(Instruction, APlaceForAnActOnAnObjectIsJudgedByTheActAndTheObject) {
+  const auto& P = *priors();
+  const Instruction store = interpretInstruction("somewhere to store clothes", P);
+  ASSERT_EQ(store.how, "functional");
+  EXPECT_TRUE(store.object_named);
+  EXPECT_TRUE(contains(store.targets, "dresser"));  // to store is to keep (WordNet's hypernym)
+  EXPECT_FALSE(contains(store.targets, "clothes"));
+  EXPECT_TRUE(servesRequest(store, "wardrobe"));      // "storage": the noun of the verb
+  EXPECT_TRUE(servesRequest(store, "dresser"));
+  EXPECT_FALSE(servesRequest(store, "clothes dryer"));  // names the clothes, not the act
+  EXPECT_FALSE(servesRequest(store, "shower curtain"));  // a "hanging cloth": clothes are no cloths
+  const Instruction coat = interpretInstruction("somewhere to hang my coat", P);
+  ASSERT_EQ(coat.how, "functional");
+  EXPECT_TRUE(servesRequest(coat, "coat rack"));
+  EXPECT_FALSE(servesRequest(coat, "bed"));
+  const Instruction books = interpretInstruction("somewhere to put my books", P);
+  ASSERT_EQ(books.how, "functional");
+  EXPECT_TRUE(servesRequest(books, "bookshelf"));  // a closed compound, named for books
+  EXPECT_FALSE(servesRequest(books, "bed"));
+  // A watch is no place to watch tv: a request that names its object is answered by things
+  // that answer the object.
+  const Instruction tv = interpretInstruction("somewhere to watch tv", P);
+  EXPECT_EQ(tv.targets.at(0), "tv");
+  EXPECT_TRUE(servesRequest(tv, "tv"));
+  EXPECT_FALSE(servesRequest(tv, "watch"));
+  EXPECT_TRUE(servesRequest(interpretInstruction("where can I wash the dishes", P), "dishwasher"));
+  // Without a place word the object named is still the target ("read a book" is the book).
+  EXPECT_EQ(interpretInstruction("I want to read a book", P).how, "named");
+  // "Keep food cold": a refrigerator is where food "can be stored", and to store is to keep;
+  // a dresser keeps clothes, not food (was: dresser, watch, chest of drawers).
+  EXPECT_EQ(interpretInstruction("I need to keep food cold", P).targets, std::vector<std::string>{"fridge"});
+  // Kin alone is no answer: a bottle "can be capped", and to cap is to "lie at the top of".
+  EXPECT_FALSE(servesRequest(interpretInstruction("somewhere to lie down", P), "bottle"));
+  // A kind of a seat serves "somewhere to sit" as a seat does, through what a seat is for; a
+  // plunger, a "hand tool", still serves no "wash my hands".
+  const Instruction sit = interpretInstruction("somewhere to sit", P);
+  EXPECT_TRUE(servesRequest(sit, "armchair"));
+  EXPECT_FALSE(servesRequest(sit, "toilet paper"));
+  // A plural WordNet also lists in no physical sense means its singular: "shoes" is footwear,
+  // not "a particular situation".
+  ASSERT_TRUE(wordnet::lookupNoun("shoes"));
+  EXPECT_EQ(wordnet::lookupNoun("shoes")->lexfile, "noun.artifact");
+  EXPECT_TRUE(servesRequest(interpretInstruction("where can I keep my shoes", P), "shoe cabinet"));
+  const wordnet::VerbKin kin = wordnet::verbKin("stored");
+  EXPECT_TRUE(contains(kin.verbs, "keep"));
+  EXPECT_TRUE(contains(kin.nouns, "storage"));
+  EXPECT_TRUE(wordnet::verbKin("sofa").verbs.empty());
+}
+
 TEST(Instruction, UnknownWordsAreKeptLiterallyAndEmptyIsRejected) {
   const Instruction Z = interpretInstruction("find the zorblax", *priors());
   EXPECT_EQ(Z.how, "literal");
@@ -310,5 +364,7 @@ TEST(Instruction, UnknownWordsAreKeptLiterallyAndEmptyIsRejected) {
   EXPECT_EQ(stemWord("dressing"), "dress");
   EXPECT_EQ(stemWord("falling"), "fall");
   EXPECT_EQ(stemWord("meals"), "meal");
+  EXPECT_EQ(stemWord("clothing"), stemWord("clothes"));
+  EXPECT_NE(stemWord("cloth"), stemWord("clothes"));
   EXPECT_EQ(instructionWords("Find a BED, now!"), (std::vector<std::string>{"find", "a", "bed", "now"}));
 }

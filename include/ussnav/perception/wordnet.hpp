@@ -57,6 +57,15 @@ std::string actGlossOf(const std::string& word);
 // Definition of the single word's most frequent verb sense, after verb morphology:
 // verbGlossOf("dining") = "have supper; eat dinner". Empty when WordNet has no such verb.
 std::string verbGlossOf(const std::string& word);
+// Words for the act a verb names, to find it in a gloss written with other words (after verb
+// morphology; both empty when WordNet has no such verb). `verbs`: the lemmas of its most
+// frequent sense and the first lemma of each of that sense's hypernyms ("store" -> store, hive
+// away, ..., keep; a dresser is "for keeping clothes"). `nouns`: the nouns WordNet derives from its two most
+// frequent senses ("store" -> store, storage, storehouse, ...; a wardrobe "provides storage").
+struct VerbKin {
+  std::vector<std::string> verbs, nouns;
+};
+VerbKin verbKin(const std::string& word);
 // True when the word's most frequent noun sense is an animal ("dog", "cats", "pet"; not "guest"
 // or "office"), whatever sense lookupNoun() prefers indoors (it reads "dog" as an andiron).
 bool namesAnimal(const std::string& word);

@@ -8,11 +8,13 @@
 //     plant, object, food) or that matches a category of the priors by text cosine -> targets;
 //     a verb ("watch" tv, "to use" the toilet) starts none unless the n-gram is a WordNet noun,
 //     and with a verb present step 3 may name a category that fits verb and object better
-//     ("wash clothes" -> washing machine);
+//     ("wash clothes" -> washing machine); asked for a place ("somewhere to hang my coat") the
+//     object is only one candidate of step 3 and the request is judged (a coat rack serves it);
 //  3. otherwise a functional request: the content words (stemmed, filler words dropped) are
 //     looked up in each candidate category's name, synonyms and WordNet gloss ("bed: a piece of
 //     furniture that provides a place to sleep": 2 for a name, 1.5 for a purpose "to / for W",
-//     1 for a mention); the best-scoring categories become the
+//     1 for a mention or for the act in other words, wordnet::verbKin); the best-scoring
+//     categories become the
 //     targets, the best-scoring room type a hint;
 //  4. nothing recognised: the content words themselves are the target (an unknown label can
 //     still be matched by the text encoder).
@@ -35,6 +37,8 @@ struct Instruction {
   // targets' score: what labels the vocabulary did not hold are judged by (servesRequest).
   std::vector<std::string> request, request_verbs;
   double score = 0.0;
+  // The request names what the act is on ("store clothes"): a label serves only if it answers that.
+  bool object_named = false;
 };
 
 // Throws InputError (file "goal") on an empty or all-filler instruction.
