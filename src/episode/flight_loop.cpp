@@ -106,9 +106,13 @@ EpisodeRun FlightLoop::fly(const EpisodeProgress& progress) {
     const Stopwatch plan_sw;
     // 1. A confirmed object of the goal category: approach it and declare.
     bool end = declare(f);
-    if (!end) chooseObject();
+    // (episode.look_first: not while still turning at take-off; then the nearest goal object
+    // seen all round, not the first one seen.)
+    const bool looking = look_steps_ > 0 && ep_.look_first;
+    if (!end && !looking) chooseObject();
     // 2. Otherwise look around at take-off, then explore.
     if (!end && !approaching_) lookAround();
+    if (!end && looking && look_steps_ == 0) chooseObject();
     if (approaching_) look_steps_ = 0;
     if (!end && !approaching_ && look_steps_ == 0)
       end = explore();

@@ -178,3 +178,38 @@ TEST(Episode, AGoalSightedInAFewFramesIsApproachedAndDeclaredOnlyWhenSeenOftenEn
   EXPECT_FALSE(never.found_object.has_value()) << never.end_reason;
   EXPECT_NE(never.end_reason, "wrong_object");
 }
+
+TEST(Episode, LookFirstApproachesTheNearestGoalSeenAllRound) {
+  // Two chairs in the start room: one ahead of the UAV (in view at take-off, 2.1 m off), one
+  // behind it (out of view until it turns, 1.1 m off). Approaching the first one seen left the
+  // nearer one behind (the Webots apartment, "somewhere to sit": 4.1 m flown to a chair with an
+  // armchair beside the start). With episode.look_first the take-off turns finish first, and
+  // the nearest goal object seen all round is approached; turning costs no path.
+  const auto spec = [] {
+    EpisodeSpec s;
+    s.world = test::twoRooms(true);  // start (2.5, 2), facing +x
+    test::addObject(s.world, "chair", Vec3(4.6, 2.0, 0.45), Vec3(0.25, 0.25, 0.45));  // ahead
+    test::addObject(s.world, "chair", Vec3(1.4, 2.0, 0.45), Vec3(0.25, 0.25, 0.45));  // behind
+    for (Object& o : s.world.objects) o.room_id = s.world.rooms[0].id;
+    s.world_name = "two-rooms";
+    s.goal = "chair";
+    s.planner = "frontier";
+    s.seed = 3;
+    return s;
+  };
+  Config cfg = testConfig();
+  cfg.episode.look_around = true;
+  cfg.episode.look_first = true;
+  const EpisodeResult first = runEpisode(spec(), cfg).result;
+  ASSERT_TRUE(first.success) << first.end_reason;
+  ASSERT_TRUE(first.found_object.has_value());
+  EXPECT_NEAR(first.found_object->position.x(), 1.4, 0.5);  // the chair behind
+  cfg.episode.look_first = false;
+  const EpisodeResult seen = runEpisode(spec(), cfg).result;
+  ASSERT_TRUE(seen.success) << seen.end_reason;
+  ASSERT_TRUE(seen.found_object.has_value());
+  EXPECT_NEAR(seen.found_object->position.x(), 4.6, 0.5);  // the chair ahead, seen first
+  std::printf("[ look_first on / off ] %.2f m / %.2f m (shortest %.2f m)\n", first.path_length_m, seen.path_length_m,
+              first.shortest_path_m);
+  EXPECT_LE(first.path_length_m, seen.path_length_m);
+}

@@ -355,6 +355,8 @@ struct EpisodeConfig {
                                       // try from the graph node nearest to it before it is dropped
   bool look_around = true;            // at take-off, turn on the spot (three 120-degree steps) before
                                       // the first plan: the camera sees the start room all round
+  bool look_first = true;             // a goal object seen during those turns is approached only
+                                      // after them, the nearest of all seen (turning costs no path)
   template <class V> void visit(V& v) {
     v.field("max_time_s", max_time_s, 1.0, 1e6, "s");
     v.field("max_distance_m", max_distance_m, 0.0, 1e6, "m");
@@ -373,6 +375,7 @@ struct EpisodeConfig {
     v.field("end_on_collision", end_on_collision);
     v.field("close_look", close_look);
     v.field("look_around", look_around);
+    v.field("look_first", look_first);
   }
 };
 
