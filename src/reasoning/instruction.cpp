@@ -325,11 +325,13 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   // A request that names what the act is on ("store CLOTHES", "watch TV") is answered only by
   // things that name it too: a watch is no place to watch tv, nor a dresser ("for keeping
   // clothes") one to keep shoes. Without any such thing, anything answering the act is kept.
-  const auto on_object = [&](const std::string& v) { return matchRequest(want, verbs, v, "", true).object; };
-  I.object_named = !named.empty() && std::any_of(vocab.begin(), vocab.end(), on_object);
+  std::vector<RequestMatch> matches;
+  matches.reserve(vocab.size());
+  for (const auto& v : vocab) matches.push_back(matchRequest(want, verbs, v, "", true));
+  I.object_named = !named.empty() && std::any_of(matches.begin(), matches.end(), [](const RequestMatch& m) { return m.object; });
   std::vector<std::pair<double, std::string>> scored;
-  for (const auto& v : vocab)
-    if (const double s = score(v, ""); s > 0.0 && (!I.object_named || on_object(v))) scored.push_back({s, v});
+  for (size_t i = 0; i < vocab.size(); ++i)
+    if (matches[i].score > 0.0 && (!I.object_named || matches[i].object)) scored.push_back({matches[i].score, vocab[i]});
   // Best first; among equals the shorter name ("shower" before "shower curtain").
   const auto words_in = [](const std::string& x) { return std::count(x.begin(), x.end(), ' '); };
   std::stable_sort(scored.begin(), scored.end(), [&](const auto& a, const auto& b) {
