@@ -504,6 +504,33 @@ VerbKin verbKin(const std::string& word) {
       VerbKin{});
 }
 
+bool nounOfVerb(const std::string& label, const std::string& verb) {
+  const auto sense = lookupLabel(label);
+  const std::string v = lower(verb);
+  if (!sense || v.empty() || v.size() >= WORDBUF - 1) return false;
+  return withDb(
+      [&](Db&) {
+        std::string form = v;
+        std::replace(form.begin(), form.end(), ' ', '_');
+        char empty[1] = {0};
+        SynsetPtr s = read_synset(NOUN, sense->offset, empty);
+        if (!s) return false;
+        bool found = false;
+        for (int i = 0; i < s->ptrcount && !found; ++i) {
+          if (s->ptrtyp[i] != DERIVATION || s->ppos[i] != VERB) continue;
+          SynsetPtr t = read_synset(VERB, s->ptroff[i], empty);
+          if (!t) continue;
+          // A derivation is lexical: it joins one word of each synset (pto, 1-based; 0 = all).
+          for (int k = 0; k < t->wcount && !found; ++k)
+            found = (s->pto[i] <= 0 || s->pto[i] == k + 1) && lower(t->words[k]) == form;
+          free_synset(t);
+        }
+        free_synset(s);
+        return found;
+      },
+      false);
+}
+
 bool namesAnimal(const std::string& word) {
   return withDb(
       [&](Db& db) {

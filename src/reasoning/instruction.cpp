@@ -158,8 +158,14 @@ RequestMatch matchRequest(const std::set<std::string>& want, const std::set<std:
   };
   RequestMatch m;
   int kin_verbs = 0;
+  // A verb of the request that is the name's own word serves only when WordNet makes the thing
+  // from the act: a shower is to shower, an iron to iron; a watch (the timepiece) is not to watch.
+  const auto homograph = [&](const std::string& w) {
+    return object && verbs.count(w) && instructionWords(name).size() == 1 && stemWord(name) == w &&
+           !wordnet::nounOfVerb(name, verbOfStem(w));
+  };
   for (const auto& w : want) {
-    const double s = name_words.count(w) ? 2.0
+    const double s = name_words.count(w) && !homograph(w) ? 2.0
                      : purposes.count(w) ? 1.5
                      : extra_words.count(w) || (gloss_words.count(w) && (!verbs.count(w) || verb_forms.count(w))) ? 1.0
                                                                                                                : 0.0;

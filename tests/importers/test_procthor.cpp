@@ -9,7 +9,9 @@
 #include "support/paths.hpp"
 #include "ussnav/core/error.hpp"
 #include "ussnav/core/io.hpp"
+#include "ussnav/sim/ground_truth.hpp"
 #include "ussnav/sim/importers/import.hpp"
+#include "ussnav/sim/sensors.hpp"
 #include "ussnav/sim/world_io.hpp"
 
 using namespace ussnav;
@@ -201,4 +203,41 @@ TEST(Procthor, TruncatedOrIncompleteHousesAreInputErrors) {
   std::ofstream(alone) << text;
   e = errorOf([&] { importProcthorHouse(alone); });
   EXPECT_NE(e.find("asset"), std::string::npos) << e;
+}
+
+// ProcTHOR's boxes are an asset's bounds: a bed's holds its headboard, a sofa's its backrest. A
+// book lying on the mattress (Book|4|2 on Bed|4|2 of house 5: top at 0.675 m, the bed's box at
+// 0.712 m) is inside the bed's box, and a world of solid boxes would never show it. The importer
+// rests such a child on its receptacle's top, where the depth camera sees it; what lies in a
+// closed receptacle (a fridge) stays inside.
+TEST(Procthor, AChildInsideItsReceptaclesBoxRestsOnItsTopAndIsSeen) {
+  if (!test::haveSharedData()) GTEST_SKIP() << "shared data absent";
+  ImportReport rep;
+  const World w = importProcthorHouse(house(5), {}, &rep);
+  const Object *book = nullptr, *bed = nullptr, *fridge = nullptr;
+  for (const auto& o : w.objects) {
+    if (o.category == "book" && (o.box.center.head<2>() - Vec2(11.522, 1.787)).norm() < 1e-3) book = &o;
+    if (o.category == "bed") bed = &o;
+    if (o.category == "fridge") fridge = &o;
+  }
+  ASSERT_TRUE(book && bed && fridge);
+  const double bed_top = bed->box.center.z() + bed->box.half_extents.z();
+  EXPECT_NEAR(bed_top, 0.7116, 1e-3);
+  EXPECT_NEAR(book->box.center.z() - book->box.half_extents.z(), bed_top, 1e-9);
+  // In the fridge: an egg, still inside its box.
+  int in_fridge = 0;
+  for (const auto& o : w.objects)
+    if (&o != fridge && fridge->box.contains(o.box.center)) ++in_fridge;
+  EXPECT_GE(in_fridge, 1);
+  bool noted = false;
+  for (const auto& n : rep.notes) noted |= n.find("set on its top") != std::string::npos;
+  EXPECT_TRUE(noted);
+
+  // The depth camera at flight height 1.6 m from the bed's foot sees the book: enough pixels
+  // for the detector (perception.min_pixels 20).
+  const GroundTruthGrid gt(w, 0.05);
+  DepthCamera cam(CameraConfig{});
+  const DepthFrame f = cam.render(gt, Pose{Vec3(11.0, 3.4, 1.2), -kPi / 2});
+  const long seen = std::count(f.instance.begin(), f.instance.end(), static_cast<uint16_t>(book->id));
+  EXPECT_GE(seen, 30);
 }

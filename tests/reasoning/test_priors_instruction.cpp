@@ -241,6 +241,17 @@ TEST(Instruction, AVerbIsAnActionNotTheObjectSought) {
   EXPECT_TRUE(contains(sit, "sofa"));
   // Among equally good categories the plainest comes first.
   EXPECT_EQ(targets("somewhere to shower").at(0), "shower");
+  // A verb that is a thing's own name serves only when WordNet makes the thing from the act: a
+  // shower (the fixture) is to shower, a vacuum cleaner to vacuum; a watch (the timepiece) is
+  // not to watch, so "watch a movie" no longer looks for one.
+  EXPECT_TRUE(wordnet::nounOfVerb("shower", "shower"));
+  EXPECT_TRUE(wordnet::nounOfVerb("vacuum", "vacuum"));
+  EXPECT_FALSE(wordnet::nounOfVerb("watch", "watch"));
+  EXPECT_FALSE(wordnet::nounOfVerb("sofa", "watch"));
+  const Instruction M = interpretInstruction("I want to watch a movie", P);
+  EXPECT_FALSE(contains(M.targets, "watch"));
+  EXPECT_FALSE(servesRequest(M, "watch"));
+  EXPECT_TRUE(servesRequest(interpretInstruction("I want to shower", P), "shower"));
   // A WordNet compound that starts with a verb form is still a named object.
   for (const char* text : {"washing machine", "dining table", "a dining table"}) {
     const Instruction N = interpretInstruction(text, P);

@@ -66,6 +66,10 @@ struct VerbKin {
   std::vector<std::string> verbs, nouns;
 };
 VerbKin verbKin(const std::string& word);
+// True when the sense lookupLabel() gives `label` is one WordNet derives from a sense of the verb
+// `verb` (or it from the noun): a shower (the fixture) is to shower, an iron (the appliance) to
+// iron, but a watch (the timepiece) is not to watch. False when either is unknown.
+bool nounOfVerb(const std::string& label, const std::string& verb);
 // True when the word's most frequent noun sense is an animal ("dog", "cats", "pet"; not "guest"
 // or "office"), whatever sense lookupNoun() prefers indoors (it reads "dog" as an andiron).
 bool namesAnimal(const std::string& word);
