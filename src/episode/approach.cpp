@@ -24,24 +24,35 @@ bool seesBox(const OccupancyMap& map, const Vec3& p, const Vec3& c, const Aabb& 
   return (lo.array() <= box.max.array() + kTouch).all() && (hi.array() >= box.min.array() - kTouch).all();
 }
 
+namespace {
+constexpr double kSightCorridor = 0.75;  // m, see transitNode
+}  // namespace
+
 int transitNode(const ConnectivityGraph& graph, const OccupancyMap& map, const Aabb& box, const Vec3& centroid,
-                double flight_z, double radius, const std::vector<Vec3>& avoid) {
+                double flight_z, double radius, const std::vector<Vec3>& avoid, const Vec3* seen_from) {
   if (graph.size() == 0) return -1;
   const auto avoided = [&](int n) {
     return std::any_of(avoid.begin(), avoid.end(),
                        [&](const Vec3& a) { return (graph.node(n).center - a).head<2>().norm() < 1.0; });
   };
   const Vec3 c = box.center();
-  int best = -1, nearest = -1;
-  double best_d = std::numeric_limits<double>::infinity(), nearest_d = best_d;
+  int best = -1, nearest = -1, seen_side = -1;
+  double best_d = std::numeric_limits<double>::infinity(), nearest_d = best_d, seen_side_d = best_d;
   for (const int n : graph.nodesWithin(centroid, radius)) {
     if (avoided(n)) continue;
     const Vec3 at(graph.node(n).center.x(), graph.node(n).center.y(), flight_z);
     const double d = (at - centroid).norm();
     if (d < nearest_d) nearest = n, nearest_d = d;
     if (d < best_d && seesBox(map, at, c, box, true)) best = n, best_d = d;
+    // Along the line of sight it was seen along (in plan): space the camera looked through.
+    if (seen_from) {
+      const Vec2 a = seen_from->head<2>(), ab = centroid.head<2>() - a, p = graph.node(n).center.head<2>();
+      const double t = ab.squaredNorm() > 1e-12 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+      if ((p - (a + t * ab)).norm() <= kSightCorridor && d < seen_side_d) seen_side = n, seen_side_d = d;
+    }
   }
   if (best >= 0) return best;
+  if (seen_side >= 0) return seen_side;
   if (!avoid.empty() && nearest >= 0) return nearest;
   return graph.nearestNode(centroid);
 }

@@ -154,6 +154,9 @@ SensedFrame FlightLoop::sense() {
   SensedFrame f = sim_.sense(uav_.pose(), t_);
   const MapperFrameReport rep = mapper_.process(MapperFrame{f.pose, f.scan ? &*f.scan : nullptr, &f.depth, t_});
   double frame_ms = rep.total_ms;
+  if (mapper_.objects())  // where each goal object seen in this frame was seen from
+    for (const MappedObject& o : mapper_.objects()->objects())
+      if (o.last_seen == t_ && goal_.matches(o.label)) tries_.seenFrom(o.id, f.pose.position, o.centroid);
   {
     const Stopwatch sw;
     frontiers_.update(mapper_.grid(), mapper_.coverage(), mapper_.anchorNode(f.pose.position), t_);

@@ -139,7 +139,7 @@ void FlightLoop::chooseObject() {
     // No pose the map can vouch for yet (the object was seen from afar, beyond the window or
     // through a door): fly to the graph node nearest to it, from where the window covers it.
     const int n = transitNode(graph, grid, best->box, best->centroid, flight_z_, ep_.transit_radius,
-                              tries_.noPoseSpots(best->id));
+                              tries_.noPoseSpots(best->id), tries_.seenFromSpot(best->id));
     const Vec3 via = n >= 0 ? Vec3(graph.node(n).center.x(), graph.node(n).center.y(), flight_z_) : Vec3::Zero();
     if (n >= 0 && (via - best->centroid).norm() <= ep_.transit_radius &&
         (via - uav_.pose().position).norm() > ep_.goal_tolerance) {

@@ -74,6 +74,17 @@ bool ObjectTries::lookedInVainFrom(int id, const Vec3& p) const {
          std::any_of(it->second.begin(), it->second.end(), [&](const Vec3& q) { return (q - p).norm() < 0.5; });
 }
 
+void ObjectTries::seenFrom(int id, const Vec3& where, const Vec3& object) {
+  const double d = (where - object).norm();
+  const auto it = seen_from_.find(id);
+  if (it == seen_from_.end() || d < it->second.second) seen_from_[id] = {where, d};
+}
+
+const Vec3* ObjectTries::seenFromSpot(int id) const {
+  const auto it = seen_from_.find(id);
+  return it == seen_from_.end() ? nullptr : &it->second.first;
+}
+
 bool ObjectTries::pendingRetry(double t) const {
   return std::any_of(retry_at_.begin(), retry_at_.end(), [&](const auto& r) { return r.second > t && r.second < kForGoodBelow; });
 }

@@ -9,6 +9,7 @@
 #include "support/scene_flight.hpp"
 #include "ussnav/core/config.hpp"
 #include "ussnav/episode/approach.hpp"
+#include "ussnav/episode/search_memory.hpp"
 #include "ussnav/exploration/graph_costs.hpp"
 
 using namespace ussnav;
@@ -177,4 +178,38 @@ TEST(Approach, TransitAvoidsSpotsWithNoPose) {
   const int nearest = flight.graph.nearestNode(centroid);
   EXPECT_EQ(transitNode(flight.graph, flight.grid, kFridge, centroid, kFlightZ, 0.01, {flight.graph.node(nearest).center}),
             nearest);
+}
+
+TEST(Approach, TransitWithNothingInSightGoesToTheSideTheObjectWasSeenFrom) {
+  // The space around the fridge unseen on both sides of the wall (beyond the rolling window, or
+  // forgotten): no node near it sees the box, and the node nearest to its centroid (pulled onto
+  // the wall) is in the other room. Seen from its own room, the transit goes to a node there;
+  // with no spot recorded, to the nearest node, as before.
+  const test::SceneFlight flight = fridgeBehindAWall();
+  const MapWithUnseen map(flight.grid, Aabb(Vec3(2.5, 2.5, 0.0), Vec3(6.0, 6.3, 2.8)));
+  const Vec3 centroid(4.6, 3.9, 0.9);
+  const int nearest = flight.graph.nearestNode(centroid);
+  ASSERT_GE(nearest, 0);
+  ASSERT_LT(flight.graph.node(nearest).center.y(), 3.94) << "the scene no longer makes the case";
+  for (const int n : flight.graph.nodesWithin(centroid, 3.0)) {
+    const Vec3 at(flight.graph.node(n).center.x(), flight.graph.node(n).center.y(), kFlightZ);
+    ASSERT_FALSE(seesBox(map, at, kFridge.center(), kFridge, true)) << "node " << n << " sees the fridge";
+  }
+  EXPECT_EQ(transitNode(flight.graph, map, kFridge, centroid, kFlightZ, 3.0), nearest);
+
+  ObjectTries tries;
+  tries.seenFrom(7, Vec3(4.3, 7.6, kFlightZ), kFridge.center());
+  tries.seenFrom(7, Vec3(1.5, 1.0, kFlightZ), kFridge.center());  // farther: the first spot stays
+  ASSERT_NE(tries.seenFromSpot(7), nullptr);
+  EXPECT_NEAR(tries.seenFromSpot(7)->y(), 7.6, 1e-12);
+  EXPECT_EQ(tries.seenFromSpot(8), nullptr);
+  const int n = transitNode(flight.graph, map, kFridge, centroid, kFlightZ, 3.0, {}, tries.seenFromSpot(7));
+  ASSERT_GE(n, 0);
+  EXPECT_GT(flight.graph.node(n).center.y(), 4.06) << flight.graph.node(n).center.transpose();
+  EXPECT_LE((flight.graph.node(n).center - centroid).norm(), 3.0 + 1e-9);
+  // Seen from the other room (through the door): a node on that side.
+  const Vec3 other(4.5, 1.0, kFlightZ);
+  const int m = transitNode(flight.graph, map, kFridge, centroid, kFlightZ, 3.0, {}, &other);
+  ASSERT_GE(m, 0);
+  EXPECT_LT(flight.graph.node(m).center.y(), 3.94);
 }

@@ -49,9 +49,15 @@ bool seesBox(const OccupancyMap& map, const Vec3& p, const Vec3& box_center, con
 // being what is missing, the node nearest to `centroid`. The nearest node may be on the other
 // side of the wall the object stands against, no place to look from: nodes within 1 m (in plan)
 // of a point in `avoid` (where a transit already ended with no approach pose) are not chosen,
-// unless no other node is left. -1 on an empty graph.
+// unless no other node is left. Given `seen_from` (where the camera saw the object), when no
+// node within `radius` sees the box (the space around it beyond the rolling window, or
+// forgotten), the nearest of them within 0.75 m (in plan) of the line of sight it was seen
+// along, from `seen_from` to `centroid`, comes first: the side of the walls it was seen from (house_6 "fridge": transits again and again to a node
+// behind the kitchen wall, 0.8 m from the fridge seen from 5 m down the kitchen).
+// -1 on an empty graph.
 int transitNode(const ConnectivityGraph& graph, const OccupancyMap& map, const Aabb& box, const Vec3& centroid,
-                double flight_z, double radius, const std::vector<Vec3>& avoid = {});
+                double flight_z, double radius, const std::vector<Vec3>& avoid = {},
+                const Vec3* seen_from = nullptr);
 
 // Up to `max_poses` poses, cheapest first; empty when none qualifies.
 std::vector<ApproachPose> approachPoses(const OccupancyMap& map, const GraphDistances& from_uav, const Aabb& box,

@@ -79,12 +79,18 @@ class ObjectTries {
   // are not flown to again for that object (the map said it was in view; the camera disagreed).
   void noViewFrom(int id, const Vec3& where) { no_view_from_[id].push_back(where); }
   bool lookedInVainFrom(int id, const Vec3& p) const;
+  // Where the UAV stood when its camera saw object `id`, the nearest such spot kept: a transit
+  // with no node in sight of the object goes to the side it was seen from (transitNode's
+  // `seen_from`). nullptr when it was never recorded.
+  void seenFrom(int id, const Vec3& where, const Vec3& object);
+  const Vec3* seenFromSpot(int id) const;
 
  private:
   std::map<int, double> retry_at_;  // id -> time it may be tried again (1e18: never)
   std::map<int, int> failures_, transits_, transit_replans_, far_failures_;
   std::set<int> sightings_failed_;
   std::map<int, std::vector<Vec3>> no_pose_from_, no_view_from_;
+  std::map<int, std::pair<Vec3, double>> seen_from_;  // id -> spot, its distance to the object
 };
 
 }  // namespace ussnav
