@@ -51,10 +51,10 @@ bool seesBox(const OccupancyMap& map, const Vec3& p, const Vec3& box_center, con
 // of a point in `avoid` (where a transit already ended with no approach pose) are not chosen,
 // unless no other node is left. Given `seen_from` (where the camera saw the object), when no
 // node within `radius` sees the box (the space around it beyond the rolling window, or
-// forgotten), the nearest of them within 0.75 m (in plan) of the line of sight it was seen
-// along, from `seen_from` to `centroid`, comes first: the side of the walls it was seen from (house_6 "fridge": transits again and again to a node
-// behind the kitchen wall, 0.8 m from the fridge seen from 5 m down the kitchen).
-// -1 on an empty graph.
+// forgotten), the nearest of them within 0.75 m (in plan) of the line of sight from `seen_from`
+// to `centroid` comes first: the side of the walls it was seen from (house_6 "fridge":
+// transits again and again to a node behind the kitchen wall, 0.8 m from the fridge seen from
+// 5 m down the kitchen). -1 on an empty graph.
 int transitNode(const ConnectivityGraph& graph, const OccupancyMap& map, const Aabb& box, const Vec3& centroid,
                 double flight_z, double radius, const std::vector<Vec3>& avoid = {},
                 const Vec3* seen_from = nullptr);
