@@ -169,10 +169,7 @@ OrientedBox objectBox(const Vec3& pos, const Vec3& rot_deg, const Vec3& size) {
 // sofa seat under a backrest, no open shelf: such a child could never be seen (216 of the 1532
 // objects of the 20 houses in ../shared/data, books and remotes on beds and sofas among them).
 bool swallowedBy(const OrientedBox& child, const OrientedBox& parent) {
-  const Vec3 d = child.center - parent.center;
-  const double c = std::cos(parent.yaw), s = std::sin(parent.yaw);
-  const double lx = c * d.x() + s * d.y(), ly = -s * d.x() + c * d.y();
-  const bool over = std::abs(lx) <= parent.half_extents.x() && std::abs(ly) <= parent.half_extents.y();
+  const bool over = parent.contains(Vec3(child.center.x(), child.center.y(), parent.center.z()));
   return over && child.center.z() + child.half_extents.z() < parent.center.z() + parent.half_extents.z() - 0.005;
 }
 
