@@ -531,6 +531,28 @@ bool nounOfVerb(const std::string& label, const std::string& verb) {
       false);
 }
 
+std::string usualNounLexfile(const std::string& word) {
+  return withDb(
+      [&](Db& db) -> std::string {
+        const auto picked = lookupNounLocked(db, word);
+        if (!picked) return {};
+        // The index word lookupNoun() read: "hands" has senses of its own (guardianship, a
+        // crew), but the thing it names is read from "hand".
+        std::string w = lower(word);
+        std::replace(w.begin(), w.end(), ' ', '_');
+        std::vector<std::string> forms{w};
+        for (const auto& base : db.baseForms(w)) forms.push_back(base);
+        for (const auto& form : forms) {
+          const std::vector<long> offs = db.senses(form);
+          if (std::find(offs.begin(), offs.end(), picked->offset) == offs.end()) continue;
+          const SynsetData& d = db.synset(offs.front());  // the most frequent sense
+          return d.fnum >= 0 && d.fnum < MAXFNUM && lexfiles[d.fnum] ? lexfiles[d.fnum] : "";
+        }
+        return {};
+      },
+      std::string());
+}
+
 bool namesAnimal(const std::string& word) {
   return withDb(
       [&](Db& db) {

@@ -42,6 +42,10 @@ bool physicalLexfile(const std::string& lf) {
   return lf == "noun.artifact" || lf == "noun.plant" || lf == "noun.object" || lf == "noun.food";
 }
 
+// A part of the body ("hands", "teeth", "face") is the requester's own, not a thing to look for
+// in the building, though WordNet also has a clock's hands and a saw's teeth among its artifacts.
+bool bodyPart(const std::string& phrase) { return wordnet::usualNounLexfile(phrase) == "noun.body"; }
+
 std::string joinWords(const std::vector<std::string>& w, size_t a, size_t b) {
   std::string s;
   for (size_t i = a; i < b; ++i) s += (i > a ? " " : "") + w[i];
@@ -272,7 +276,7 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
       const bool has_verb = std::any_of(verb.begin() + long(i), verb.begin() + long(i + n), [](bool v) { return v; });
       if (has_verb && (n < 2 || !wordnet::lookupNoun(phrase))) continue;
       const auto sense = wordnet::lookupNoun(phrase);
-      bool is_named = sense && physicalLexfile(sense->lexfile);
+      bool is_named = sense && physicalLexfile(sense->lexfile) && !bodyPart(phrase);
       if (!is_named)
         for (const auto& c : P.categories())
           if (enc.similarity(phrase, c) >= 0.9) {
@@ -334,7 +338,10 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   std::vector<RequestMatch> matches;
   matches.reserve(vocab.size());
   for (const auto& v : vocab) matches.push_back(matchRequest(want, verbs, v, "", true));
-  I.object_named = !named.empty() && std::any_of(matches.begin(), matches.end(), [](const RequestMatch& m) { return m.object; });
+  // An act on the requester's body names what it is on too: "wash my HANDS" asks for no
+  // washing machine.
+  const bool names_object = !named.empty() || std::any_of(content.begin(), content.end(), bodyPart);
+  I.object_named = names_object && std::any_of(matches.begin(), matches.end(), [](const RequestMatch& m) { return m.object; });
   std::vector<std::pair<double, std::string>> scored;
   for (size_t i = 0; i < vocab.size(); ++i)
     if (matches[i].score > 0.0 && (!I.object_named || matches[i].object)) scored.push_back({matches[i].score, vocab[i]});

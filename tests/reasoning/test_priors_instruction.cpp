@@ -264,6 +264,34 @@ TEST(Instruction, AVerbIsAnActionNotTheObjectSought) {
   EXPECT_FALSE(wordnet::knownAsVerb("sofa"));
 }
 
+TEST(Instruction, APartOfTheBodyIsNotTheThingSought) {
+  // WordNet lists a clock's hands and a saw's teeth among its artifacts, so "hands" and "teeth"
+  // were read as things to look for. Their usual sense is the body part: the requester's own.
+  EXPECT_EQ(wordnet::usualNounLexfile("hands"), "noun.body");  // read from "hand"
+  EXPECT_EQ(wordnet::usualNounLexfile("teeth"), "noun.body");
+  EXPECT_EQ(wordnet::usualNounLexfile("bed"), "noun.artifact");
+  EXPECT_EQ(wordnet::usualNounLexfile("zorblax"), "");
+  const auto& P = *priors();
+  const Instruction H = interpretInstruction("somewhere to wash my hands", P);
+  EXPECT_EQ(H.how, "functional");
+  EXPECT_FALSE(contains(H.targets, "hands"));
+  EXPECT_TRUE(contains(H.targets, "hand towel"));
+  // The act is on the hands, so a thing that answers the act alone does not serve: no washing
+  // machine (it did when the hands were no longer a named object and nothing else changed).
+  EXPECT_FALSE(contains(H.targets, "washing machine"));
+  EXPECT_FALSE(servesRequest(H, "washing machine"));
+  for (const char* text : {"I want to brush my teeth", "somewhere to wash my face", "I want to dry my hair"}) {
+    const Instruction B = interpretInstruction(text, P);
+    for (const char* part : {"teeth", "face", "hair"}) EXPECT_FALSE(contains(B.targets, part)) << text;
+  }
+  // "Chest" is a thorax before it is a box: the request finds the chest of drawers by its
+  // synonyms instead.
+  EXPECT_TRUE(contains(interpretInstruction("find a chest", P).targets, "dresser"));
+  // Things stay things.
+  EXPECT_EQ(interpretInstruction("find my glasses", P).how, "named");
+  EXPECT_EQ(interpretInstruction("find the hand towel", P).targets, std::vector<std::string>{"hand towel"});
+}
+
 // A functional request names categories of the priors' vocabulary; an object seen with a label
 // outside it is judged by the same score (servesRequest): before, "somewhere to cook" looked
 // for a pan only, and in a generated apartment, which has a stove and no pan, found nothing.

@@ -70,6 +70,11 @@ VerbKin verbKin(const std::string& word);
 // `verb` (or it from the noun): a shower (the fixture) is to shower, an iron (the appliance) to
 // iron, but a watch (the timepiece) is not to watch. False when either is unknown.
 bool nounOfVerb(const std::string& label, const std::string& verb);
+// Lexicographer file of the most frequent sense of the index word lookupNoun() reads the word
+// from: "noun.body" for "hands" (read as "hand", whose usual sense is the body part, though
+// lookupNoun() picks a clock's hand) and "teeth"; "noun.artifact" for "bed". Empty when the
+// word is no WordNet noun.
+std::string usualNounLexfile(const std::string& word);
 // True when the word's most frequent noun sense is an animal ("dog", "cats", "pet"; not "guest"
 // or "office"), whatever sense lookupNoun() prefers indoors (it reads "dog" as an andiron).
 bool namesAnimal(const std::string& word);
