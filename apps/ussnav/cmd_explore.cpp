@@ -1,6 +1,7 @@
 // `ussnav explore`: one ObjectNav episode in the simulator (episode/episode.hpp). Writes
 // DIR/result.json, DIR/scene_graph.json, DIR/trajectory.csv and DIR/topdown.png.
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -64,6 +65,12 @@ void runExplore(const ExploreArgs& a) {
                 r.found_object->position.x(), r.found_object->position.y(), r.found_object->position.z());
   if (r.goal_instances == 0)
     std::printf("  note: the world holds no instance of \"%s\" (the episode cannot succeed)\n", a.goal.c_str());
+  if (r.search_m >= 0) {
+    std::printf("  goal first sighted at t=%.1f s after %.1f m; flown after it %.1f m", r.sighted_s, r.search_m,
+                std::max(0.0, r.path_length_m - r.search_m));
+    if (r.approach_shortest_m >= 0) std::printf(" (shortest from there %.1f m)", r.approach_shortest_m);
+    std::printf("\n");
+  }
   std::printf("  scene graph: %zu nodes, %zu regions, %zu objects; camera saw %.0f of %.0f m^2 known\n",
               run.graph.nodes.size(), run.graph.regions.size(), run.graph.objects.size(),
               r.coverage.empty() ? 0.0 : r.coverage.back().camera_seen_m2, r.coverage.empty() ? 0.0 : r.coverage.back().known_m2);

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
@@ -40,6 +41,13 @@ nlohmann::json toJson(const EpisodeResult& r) {
   j["stage_ms"] = r.stage_ms;
   j["reasoning"] = r.reasoning;
   j["reasoner_fallbacks"] = r.reasoner_fallbacks;
+  if (r.search_m >= 0)
+    j["sighting"] = {{"t_s", r.sighted_s},
+                     {"search_m", r.search_m},
+                     {"approach_m", std::max(0.0, r.path_length_m - r.search_m)},
+                     {"approach_shortest_m", r.approach_shortest_m >= 0 ? nlohmann::json(r.approach_shortest_m) : nlohmann::json(nullptr)}};
+  else
+    j["sighting"] = nullptr;
   j["region_labels"] = r.region_labels.is_null() ? nlohmann::json::object() : r.region_labels;
   nlohmann::json cov = nlohmann::json::array();
   for (const CoverageSample& c : r.coverage) cov.push_back({{"t", c.t}, {"known_m2", c.known_m2}, {"camera_seen_m2", c.camera_seen_m2}});

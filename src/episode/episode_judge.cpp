@@ -31,8 +31,8 @@ GroundTruthGoal evaluateGoal(const Simulator& sim, const GoalMatcher& goal, cons
       goals.push_back(p);
       break;
     }
-  if (!goals.empty())
-    if (auto path = planner.shortestPath(start.position.head<2>(), goals)) g.shortest_path = GtPlanner::length(*path);
+  g.success_cells = goals;
+  g.shortest_path = shortestToSuccess(sim, g, start.position.head<2>());
   const Room* start_room = w.roomAt(start.position.head<2>());
   if (start_room) {
     g.multi_room = std::none_of(g.instances.begin(), g.instances.end(),
@@ -41,6 +41,16 @@ GroundTruthGoal evaluateGoal(const Simulator& sim, const GoalMatcher& goal, cons
     g.multi_room = g.shortest_path > 8.0;  // worlds without rooms: far counts as multi-room
   }
   return g;
+}
+
+bool nearGoalInstance(const GroundTruthGoal& g, const Vec3& p, double radius) {
+  return std::any_of(g.instances.begin(), g.instances.end(), [&](const Object* o) { return o->box.distance(p) <= radius; });
+}
+
+double shortestToSuccess(const Simulator& sim, const GroundTruthGoal& g, const Vec2& from) {
+  if (g.success_cells.empty()) return -1.0;
+  const auto path = sim.planner().shortestPath(from, g.success_cells);
+  return path ? GtPlanner::length(*path) : -1.0;
 }
 
 bool judgeFound(const GroundTruthGoal& g, const Pose& pose, const DepthFrame& frame, double found_radius, int min_pixels) {

@@ -155,8 +155,15 @@ SensedFrame FlightLoop::sense() {
   const MapperFrameReport rep = mapper_.process(MapperFrame{f.pose, f.scan ? &*f.scan : nullptr, &f.depth, t_});
   double frame_ms = rep.total_ms;
   if (mapper_.objects())  // where each goal object seen in this frame was seen from
-    for (const MappedObject& o : mapper_.objects()->objects())
-      if (o.last_seen == t_ && goal_.matches(o.label)) tries_.seenFrom(o.id, f.pose.position, o.centroid);
+    for (const MappedObject& o : mapper_.objects()->objects()) {
+      if (o.last_seen != t_ || !goal_.matches(o.label)) continue;
+      tries_.seenFrom(o.id, f.pose.position, o.centroid);
+      if (R_.search_m < 0 && nearGoalInstance(truth_, o.centroid, kSightingRadius)) {  // evaluation only
+        R_.sighted_s = t_;
+        R_.search_m = uav_.distanceTravelled();
+        R_.approach_shortest_m = shortestToSuccess(sim_, truth_, f.pose.position.head<2>());
+      }
+    }
   {
     const Stopwatch sw;
     frontiers_.update(mapper_.grid(), mapper_.coverage(), mapper_.anchorNode(f.pose.position), t_);

@@ -31,11 +31,15 @@ std::vector<std::string> split(const std::string& line) {
   return out;
 }
 
-constexpr int kColumns = 18;
+constexpr int kColumns = 20;
+constexpr int kColumnsLabels = 18;  // episodes.csv before the sighting columns
 constexpr int kColumnsBefore = 16;  // episodes.csv before the region-label columns
 const char* const kHeaderBefore =
     "world,goal,planner,seed,split,success,spl,path_length_m,shortest_path_m,time_s,frames,collisions,end_reason,"
     "found_label,update_hz,wall_s";
+const char* const kHeaderLabels =
+    "world,goal,planner,seed,split,success,spl,path_length_m,shortest_path_m,time_s,frames,collisions,end_reason,"
+    "found_label,update_hz,wall_s,labels_scored,labels_correct";
 
 }  // namespace
 
@@ -50,21 +54,23 @@ EpisodeRow rowOf(const EpisodeResult& r) {
   w.found_label = r.found_object ? r.found_object->label : "";
   w.update_hz = r.update_hz, w.wall_s = r.wall_s;
   w.labels_scored = r.labels_scored, w.labels_correct = r.labels_correct;
+  w.search_m = r.search_m, w.approach_shortest_m = r.approach_shortest_m;
   return w;
 }
 
 std::string csvHeader() {
   return "world,goal,planner,seed,split,success,spl,path_length_m,shortest_path_m,time_s,frames,collisions,end_reason,"
-         "found_label,update_hz,wall_s,labels_scored,labels_correct";
+         "found_label,update_hz,wall_s,labels_scored,labels_correct,search_m,approach_shortest_m";
 }
 
 std::string toCsv(const EpisodeRow& r) {
   char buf[512];
-  std::snprintf(buf, sizeof buf, "%s,%s,%s,%llu,%s,%d,%.4f,%.3f,%.3f,%.2f,%d,%d,%s,%s,%.1f,%.2f,%d,%d",
+  std::snprintf(buf, sizeof buf, "%s,%s,%s,%llu,%s,%d,%.4f,%.3f,%.3f,%.2f,%d,%d,%s,%s,%.1f,%.2f,%d,%d,%.3f,%.3f",
                 clean(r.world).c_str(), clean(r.goal).c_str(), clean(r.planner).c_str(),
                 static_cast<unsigned long long>(r.seed), r.split.c_str(), int(r.success), r.spl, r.path_length_m,
                 r.shortest_path_m, r.time_s, r.frames, r.collisions, clean(r.end_reason).c_str(),
-                clean(r.found_label).c_str(), r.update_hz, r.wall_s, r.labels_scored, r.labels_correct);
+                clean(r.found_label).c_str(), r.update_hz, r.wall_s, r.labels_scored, r.labels_correct, r.search_m,
+                r.approach_shortest_m);
   return buf;
 }
 
@@ -78,11 +84,12 @@ std::vector<EpisodeRow> readEpisodesCsv(const std::filesystem::path& path, int* 
   while (std::getline(in, line)) {
     if (header) {
       header = false;
-      if (line == csvHeader() || line == kHeaderBefore) continue;
+      if (line == csvHeader() || line == kHeaderBefore || line == kHeaderLabels) continue;
     }
     const auto f = split(line);
     try {
-      if (int(f.size()) != kColumns && int(f.size()) != kColumnsBefore) throw std::invalid_argument("columns");
+      if (int(f.size()) != kColumns && int(f.size()) != kColumnsLabels && int(f.size()) != kColumnsBefore)
+        throw std::invalid_argument("columns");
       EpisodeRow r;
       r.world = f[0], r.goal = f[1], r.planner = f[2], r.seed = std::stoull(f[3]), r.split = f[4];
       if (r.split != "single_room" && r.split != "multi_room") throw std::invalid_argument("split");
@@ -90,7 +97,8 @@ std::vector<EpisodeRow> readEpisodesCsv(const std::filesystem::path& path, int* 
       r.shortest_path_m = std::stod(f[8]), r.time_s = std::stod(f[9]), r.frames = std::stoi(f[10]);
       r.collisions = std::stoi(f[11]), r.end_reason = f[12], r.found_label = f[13], r.update_hz = std::stod(f[14]);
       r.wall_s = std::stod(f[15]);
-      if (int(f.size()) == kColumns) r.labels_scored = std::stoi(f[16]), r.labels_correct = std::stoi(f[17]);
+      if (int(f.size()) >= kColumnsLabels) r.labels_scored = std::stoi(f[16]), r.labels_correct = std::stoi(f[17]);
+      if (int(f.size()) >= kColumns) r.search_m = std::stod(f[18]), r.approach_shortest_m = std::stod(f[19]);
       rows.push_back(r);
     } catch (const std::exception&) {
       if (bad) ++*bad;
@@ -157,6 +165,22 @@ void pairedMarkdown(const std::vector<EpisodeRow>& rows, std::ostringstream& md)
   }
 }
 
+// Where the path goes: successful episodes whose goal was sighted (search_m >= 0 and a
+// reachable success pose from there), per planner and split, mean path until the sighting and
+// after it, and L* from the sighting.
+nlohmann::json pathSplitJson(const std::vector<EpisodeRow>& rows, const std::string& planner, const std::string& split) {
+  int n = 0;
+  double path = 0, search = 0, approach = 0, approach_star = 0, star = 0;
+  for (const EpisodeRow& r : rows) {
+    if (r.planner != planner || !in(r, split) || !r.success || r.search_m < 0 || r.approach_shortest_m < 0) continue;
+    ++n, path += r.path_length_m, search += r.search_m, star += std::max(r.shortest_path_m, 0.0);
+    approach += std::max(0.0, r.path_length_m - r.search_m), approach_star += r.approach_shortest_m;
+  }
+  const double d = std::max(n, 1);
+  return {{"episodes", n},        {"path_length_m", path / d}, {"shortest_path_m", star / d}, {"search_m", search / d},
+          {"approach_m", approach / d}, {"approach_shortest_m", approach_star / d}};
+}
+
 }  // namespace
 
 nlohmann::json summaryJson(const std::vector<EpisodeRow>& rows) {
@@ -179,7 +203,8 @@ nlohmann::json summaryJson(const std::vector<EpisodeRow>& rows) {
       SplitSummary s = summarize(eps);
       s.spl = eps.empty() ? 0.0 : spl_sum[planner][split] / double(eps.size());
       j[planner][split] = {{"episodes", s.episodes}, {"sr", s.sr}, {"spl", s.spl}, {"path_length_m", s.path_length_m},
-                           {"time_s", s.time_s}, {"collisions", s.collisions}};
+                           {"time_s", s.time_s}, {"collisions", s.collisions},
+                           {"path_split", pathSplitJson(rows, planner, split)}};
     }
   }
   std::map<std::string, std::pair<int, int>> labels;  // planner -> scored, correct
@@ -226,11 +251,26 @@ std::string summaryMarkdown(const std::vector<EpisodeRow>& rows, const std::stri
     md << "\n";
   }
   pairedMarkdown(rows, md);
+  md << "## where the path goes\n\n| split | planner | episodes | path (m) | L* (m) | until sighted (m) | after (m) | "
+        "after, shortest (m) |\n|---|---|---:|---:|---:|---:|---:|---:|\n";
+  for (const char* split : kSplits)
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      const auto& p = it.value()[split]["path_split"];
+      if (p["episodes"].get<int>() == 0) continue;
+      char line[256];
+      std::snprintf(line, sizeof line, "| %s | %s | %d | %.1f | %.1f | %.1f | %.1f | %.1f |\n", split, it.key().c_str(),
+                    p["episodes"].get<int>(), p["path_length_m"].get<double>(), p["shortest_path_m"].get<double>(),
+                    p["search_m"].get<double>(), p["approach_m"].get<double>(), p["approach_shortest_m"].get<double>());
+      md << line;
+    }
+  md << "\n";
   md << "SR: success rate; SPL = S * L* / max(L, L*) averaged over episodes (DESIGN.md); single_room: a goal "
         "instance is in the start room; multi_room: none is; long_horizon: multi_room with L* >= "
      << kLongHorizonM << " m; ratio: SPL of the planner over SPL of frontier on the same episodes; same: within "
      << kSameSpl << " SPL; region labels: the final regions' room labels against the room holding most of each "
-        "region's nodes (ground truth), over regions whose room type the reasoner can name.\n";
+        "region's nodes (ground truth), over regions whose room type the reasoner can name; where the path goes: "
+        "successful episodes whose goal was sighted, the path until the first frame that mapped a goal instance as "
+        "the goal (ground truth) and after it, and L* from where the UAV was then.\n";
   return md.str();
 }
 

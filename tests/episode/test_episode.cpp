@@ -56,6 +56,17 @@ TEST_P(EpisodePlanners, FindsTheBedInTheNextRoomWithoutCollision) {
   // The shortest path to a pose within 1 m of the bed from (2.5, 2) through the door at x = 5:
   // at least the straight distance to the bed's 1 m neighbourhood.
   EXPECT_GE(r.shortest_path_m, (Vec2(7.7, 2.3) - Vec2(2.5, 2.0)).norm() - 1.0 - 0.05);
+  // The path split at the bed's first sighting: flown until then (search) and after it, which
+  // is at least L* from where the UAV was (it ends at a success pose, up to a 0.05 m cell and
+  // the 2-cell sampling of success poses); that L* is at most L* from the start plus the search
+  // (the triangle inequality).
+  ASSERT_GE(r.search_m, 0.0);
+  EXPECT_LE(r.search_m, r.path_length_m);
+  EXPECT_GE(r.sighted_s, 0.0);
+  EXPECT_LE(r.sighted_s, r.time_s);
+  ASSERT_GE(r.approach_shortest_m, 0.0);
+  EXPECT_GE(r.path_length_m - r.search_m, r.approach_shortest_m - 0.3);
+  EXPECT_LE(r.approach_shortest_m, r.shortest_path_m + r.search_m + 0.15);
   // Every flown position keeps the UAV radius from the ground truth.
   const GroundTruthGrid gt(twoRoomSpec(GetParam(), "bed").world, cfg.sim.gt_resolution);
   for (const TrajectorySample& s : run.trajectory) ASSERT_FALSE(gt.sphereCollides(s.pose.position, cfg.sim.uav.radius));
@@ -89,6 +100,7 @@ TEST(Episode, GoalAbsentFromTheWorldEndsWithoutSuccess) {
   EXPECT_EQ(r.goal_instances, 0);
   EXPECT_LT(r.shortest_path_m, 0.0);
   EXPECT_EQ(r.spl, 0.0);
+  EXPECT_LT(r.search_m, 0.0);  // nothing to sight
   EXPECT_TRUE(r.end_reason == "explored" || r.end_reason == "time_budget") << r.end_reason;
   EXPECT_EQ(r.collisions, 0);
 }

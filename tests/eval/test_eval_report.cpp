@@ -178,6 +178,45 @@ TEST(EvalReport, LongHorizonSplitAndPairedTableMatchHandComputation) {
   EXPECT_EQ(summaryMarkdown(full_only, "t").find("against frontier"), std::string::npos);
 }
 
+TEST(EvalReport, PathSplitAtTheSightingMatchesHandComputation) {
+  auto seen = [](EpisodeRow r, double search, double approach_star) {
+    r.search_m = search, r.approach_shortest_m = approach_star;
+    return r;
+  };
+  const std::vector<EpisodeRow> rows = {
+      seen(row("frontier", "multi_room", true, 0.25, 20), 14, 4),   // 14 m of search, 6 m of approach
+      seen(row("frontier", "multi_room", true, 0.5, 10), 8, 1),     // 8 + 2
+      seen(row("frontier", "multi_room", false, 0.0, 30), 5, 3),    // a failure: left out
+      seen(row("frontier", "multi_room", true, 0.5, 10), -1, -1),   // never sighted: left out
+      seen(row("frontier", "single_room", true, 1.0, 5), 0, 5)};
+  const auto j = summaryJson(rows);
+  const auto& m = j["frontier"]["multi_room"]["path_split"];
+  EXPECT_EQ(m["episodes"].get<int>(), 2);
+  EXPECT_NEAR(m["path_length_m"].get<double>(), 15.0, 1e-12);
+  EXPECT_NEAR(m["search_m"].get<double>(), 11.0, 1e-12);
+  EXPECT_NEAR(m["approach_m"].get<double>(), 4.0, 1e-12);
+  EXPECT_NEAR(m["approach_shortest_m"].get<double>(), 2.5, 1e-12);
+  EXPECT_EQ(j["frontier"]["all"]["path_split"]["episodes"].get<int>(), 3);
+  const std::string md = summaryMarkdown(rows, "t");
+  EXPECT_NE(md.find("| multi_room | frontier | 2 | 15.0 | 5.0 | 11.0 | 4.0 | 2.5 |"), std::string::npos) << md;
+  // The columns round-trip; a file from before them loads with no sighting.
+  int bad = 0;
+  const auto back = readEpisodesCsv(writeText("split.csv", csvHeader() + "\n" + toCsv(rows[0]) + "\n"), &bad);
+  ASSERT_EQ(back.size(), 1u);
+  EXPECT_NEAR(back[0].search_m, 14.0, 1e-3);
+  EXPECT_NEAR(back[0].approach_shortest_m, 4.0, 1e-3);
+  const std::string labels_header =
+      "world,goal,planner,seed,split,success,spl,path_length_m,shortest_path_m,time_s,frames,collisions,end_reason,"
+      "found_label,update_hz,wall_s,labels_scored,labels_correct";
+  const auto old = readEpisodesCsv(
+      writeText("labels_only.csv", labels_header + "\nw,tv,full,1,multi_room,1,0.5000,4.000,2.000,8.00,80,0,found,tv,50.0,1.00,4,2\n"),
+      &bad);
+  ASSERT_EQ(old.size(), 1u);
+  EXPECT_EQ(bad, 0);
+  EXPECT_EQ(old[0].labels_correct, 2);
+  EXPECT_LT(old[0].search_m, 0.0);
+}
+
 TEST(Suite, ShippedSuitesLoadAndTheLargeOneIsMultiRoom) {
   const auto dir = std::filesystem::path(USSNAV_SOURCE_DIR) / "configs/suites";
   int files = 0;

@@ -78,6 +78,11 @@ struct EpisodeResult {
   std::vector<CoverageSample> coverage;  // every 5 s
   nlohmann::json reasoning = nlohmann::json::object();  // instruction, reasoner decisions, faults
   int reasoner_fallbacks = 0;      // coarse decisions answered by global utility after a fault
+  // Ground truth (evaluation only): the path split at the first frame in which the UAV saw an
+  // object it took for the goal that is a goal instance (its centroid within kSightingRadius of
+  // an instance's box): `search_m` flown until then, and L* from where it was then
+  // (`approach_shortest_m`). -1 when that never happened (or no success pose is reachable).
+  double sighted_s = -1.0, search_m = -1.0, approach_shortest_m = -1.0;
   // Ground truth (evaluation only): the final regions' labels against the rooms they cover
   // (regionLabelQuality); empty without a reasoner or a world with room types.
   nlohmann::json region_labels;

@@ -3,7 +3,9 @@
 // (summary.json: {planner: {split: {episodes, sr, spl, path_length_m, time_s, collisions}}} with
 // splits single_room, multi_room, long_horizon, all; summary.md: the same as Markdown tables and,
 // where the rows hold `frontier` (the baseline) and another planner, each other planner paired
-// with it episode by episode (same world, goal and seed): SPL ratio, better / same / worse).
+// with it episode by episode (same world, goal and seed): SPL ratio, better / same / worse; and
+// where the path goes: for successful episodes whose goal was sighted, the path until the first
+// sighting of a goal instance (search) and after it (approach), against L* from the sighting).
 //
 // long_horizon is the part of multi_room whose shortest path L* is at least kLongHorizonM: the
 // paper's "long-horizon missions", where frontier-only exploration is said to degrade.
@@ -25,6 +27,7 @@ struct EpisodeRow {
   double spl = 0, path_length_m = 0, shortest_path_m = -1, time_s = 0, update_hz = 0, wall_s = 0;
   int frames = 0, collisions = 0;
   int labels_scored = 0, labels_correct = 0;  // region labels against ground truth (EpisodeResult)
+  double search_m = -1, approach_shortest_m = -1;  // the path split at the goal's first sighting (EpisodeResult)
   std::string key() const;  // world|goal|planner|seed
 };
 
