@@ -66,8 +66,9 @@ void runExplore(const ExploreArgs& a) {
   if (r.goal_instances == 0)
     std::printf("  note: the world holds no instance of \"%s\" (the episode cannot succeed)\n", a.goal.c_str());
   if (r.search_m >= 0) {
-    std::printf("  goal first sighted at t=%.1f s after %.1f m; flown after it %.1f m", r.sighted_s, r.search_m,
-                std::max(0.0, r.path_length_m - r.search_m));
+    std::printf("  goal first sighted at t=%.1f s after %.1f m", r.sighted_s, r.search_m);
+    if (r.view_shortest_m >= 0) std::printf(" (the nearest view of it %.1f m from the start)", r.view_shortest_m);
+    std::printf("; flown after it %.1f m", std::max(0.0, r.path_length_m - r.search_m));
     if (r.approach_shortest_m >= 0) std::printf(" (shortest from there %.1f m)", r.approach_shortest_m);
     std::printf("\n");
   }

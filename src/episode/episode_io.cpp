@@ -41,6 +41,7 @@ nlohmann::json toJson(const EpisodeResult& r) {
   j["stage_ms"] = r.stage_ms;
   j["reasoning"] = r.reasoning;
   j["reasoner_fallbacks"] = r.reasoner_fallbacks;
+  j["view_shortest_m"] = r.view_shortest_m >= 0 ? nlohmann::json(r.view_shortest_m) : nlohmann::json(nullptr);
   if (r.search_m >= 0)
     j["sighting"] = {{"t_s", r.sighted_s},
                      {"search_m", r.search_m},

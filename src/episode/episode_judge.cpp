@@ -3,6 +3,8 @@
 #include "ussnav/episode/episode_judge.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <utility>
 #include <map>
 
 #include "ussnav/episode/approach.hpp"
@@ -50,6 +52,44 @@ bool nearGoalInstance(const GroundTruthGoal& g, const Vec3& p, double radius) {
 double shortestToSuccess(const Simulator& sim, const GroundTruthGoal& g, const Vec2& from) {
   if (g.success_cells.empty()) return -1.0;
   const auto path = sim.planner().shortestPath(from, g.success_cells);
+  return path ? GtPlanner::length(*path) : -1.0;
+}
+
+double shortestToView(const Simulator& sim, const GroundTruthGoal& g, const Vec2& from, double range) {
+  const GtPlanner& planner = sim.planner();
+  const GroundTruthGrid& gt = sim.groundTruth();
+  // Points of each instance a view may see: its centre, and its top face's centre and the
+  // middles of the four half-planes towards its edges (a bed's foot, a table's near side).
+  std::vector<std::vector<Vec3>> marks;
+  for (const Object* o : g.instances) {
+    const OrientedBox& b = o->box;
+    const double c = std::cos(b.yaw), s = std::sin(b.yaw), top = b.center.z() + b.half_extents.z() - 0.02;
+    std::vector<Vec3> m{b.center, Vec3(b.center.x(), b.center.y(), top)};
+    for (const auto& [u, v] : {std::pair{0.7, 0.0}, {-0.7, 0.0}, {0.0, 0.7}, {0.0, -0.7}}) {
+      const double lx = u * b.half_extents.x(), ly = v * b.half_extents.y();
+      m.emplace_back(b.center.x() + c * lx - s * ly, b.center.y() + s * lx + c * ly, top);
+    }
+    marks.push_back(std::move(m));
+  }
+  std::vector<Vec2> views;
+  for (const Vec2& p : planner.freeSamples(2)) {
+    const Vec3 q(p.x(), p.y(), planner.flightZ());
+    bool seen = false;
+    for (size_t i = 0; i < g.instances.size() && !seen; ++i) {
+      if (g.instances[i]->box.distance(q) > range) continue;
+      for (const Vec3& target : marks[i]) {
+        const Vec3 to = target - q;
+        const GroundTruthGrid::Hit hit = gt.raycast(q, to.normalized(), to.norm() + 0.1);
+        if (hit.hit && gt.instanceOfLabel(hit.label) == g.instances[i]->id) {
+          seen = true;
+          break;
+        }
+      }
+    }
+    if (seen) views.push_back(p);
+  }
+  if (views.empty()) return -1.0;
+  const auto path = planner.shortestPath(from, views);
   return path ? GtPlanner::length(*path) : -1.0;
 }
 

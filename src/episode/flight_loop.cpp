@@ -73,6 +73,7 @@ FlightLoop::FlightLoop(const EpisodeSpec& spec, const Config& cfg)
   R_.seed = spec.seed;
   R_.goal_instances = int(truth_.instances.size());
   R_.shortest_path_m = truth_.shortest_path;
+  R_.view_shortest_m = shortestToView(sim_, truth_, start_.position.head<2>(), cfg_.perception.max_range);
   R_.multi_room = truth_.multi_room;
   setupReasoning(spec);
 }

@@ -67,6 +67,10 @@ TEST_P(EpisodePlanners, FindsTheBedInTheNextRoomWithoutCollision) {
   ASSERT_GE(r.approach_shortest_m, 0.0);
   EXPECT_GE(r.path_length_m - r.search_m, r.approach_shortest_m - 0.3);
   EXPECT_LE(r.approach_shortest_m, r.shortest_path_m + r.search_m + 0.15);
+  // The least search: the bed's box is 5.2 m from the start in plan, so a view within the
+  // detector's 4.5 m lies at least 0.7 m away, and no farther than a pose that sees the bed from 1 m.
+  EXPECT_GE(r.view_shortest_m, (Vec2(7.7, 2.3) - Vec2(2.5, 2.0)).norm() - 4.5 - 0.1);
+  EXPECT_LE(r.view_shortest_m, r.shortest_path_m + 0.5);
   // Every flown position keeps the UAV radius from the ground truth.
   const GroundTruthGrid gt(twoRoomSpec(GetParam(), "bed").world, cfg.sim.gt_resolution);
   for (const TrajectorySample& s : run.trajectory) ASSERT_FALSE(gt.sphereCollides(s.pose.position, cfg.sim.uav.radius));

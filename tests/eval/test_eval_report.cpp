@@ -180,7 +180,7 @@ TEST(EvalReport, LongHorizonSplitAndPairedTableMatchHandComputation) {
 
 TEST(EvalReport, PathSplitAtTheSightingMatchesHandComputation) {
   auto seen = [](EpisodeRow r, double search, double approach_star) {
-    r.search_m = search, r.approach_shortest_m = approach_star;
+    r.search_m = search, r.approach_shortest_m = approach_star, r.view_shortest_m = search / 2;
     return r;
   };
   const std::vector<EpisodeRow> rows = {
@@ -196,15 +196,17 @@ TEST(EvalReport, PathSplitAtTheSightingMatchesHandComputation) {
   EXPECT_NEAR(m["search_m"].get<double>(), 11.0, 1e-12);
   EXPECT_NEAR(m["approach_m"].get<double>(), 4.0, 1e-12);
   EXPECT_NEAR(m["approach_shortest_m"].get<double>(), 2.5, 1e-12);
+  EXPECT_NEAR(m["view_shortest_m"].get<double>(), 5.5, 1e-12);
   EXPECT_EQ(j["frontier"]["all"]["path_split"]["episodes"].get<int>(), 3);
   const std::string md = summaryMarkdown(rows, "t");
-  EXPECT_NE(md.find("| multi_room | frontier | 2 | 15.0 | 5.0 | 11.0 | 4.0 | 2.5 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| multi_room | frontier | 2 | 15.0 | 5.0 | 11.0 | 5.5 | 4.0 | 2.5 |"), std::string::npos) << md;
   // The columns round-trip; a file from before them loads with no sighting.
   int bad = 0;
   const auto back = readEpisodesCsv(writeText("split.csv", csvHeader() + "\n" + toCsv(rows[0]) + "\n"), &bad);
   ASSERT_EQ(back.size(), 1u);
   EXPECT_NEAR(back[0].search_m, 14.0, 1e-3);
   EXPECT_NEAR(back[0].approach_shortest_m, 4.0, 1e-3);
+  EXPECT_NEAR(back[0].view_shortest_m, 7.0, 1e-3);
   const std::string labels_header =
       "world,goal,planner,seed,split,success,spl,path_length_m,shortest_path_m,time_s,frames,collisions,end_reason,"
       "found_label,update_hz,wall_s,labels_scored,labels_correct";

@@ -83,6 +83,9 @@ struct EpisodeResult {
   // an instance's box): `search_m` flown until then, and L* from where it was then
   // (`approach_shortest_m`). -1 when that never happened (or no success pose is reachable).
   double sighted_s = -1.0, search_m = -1.0, approach_shortest_m = -1.0;
+  // ... and the least search: L* from the start to a point that sees a goal instance within the
+  // detector's range (shortestToView); -1 when none is reachable.
+  double view_shortest_m = -1.0;
   // Ground truth (evaluation only): the final regions' labels against the rooms they cover
   // (regionLabelQuality); empty without a reasoner or a world with room types.
   nlohmann::json region_labels;

@@ -37,6 +37,14 @@ bool nearGoalInstance(const GroundTruthGoal& g, const Vec3& p, double radius);
 // The shortest flight from `from` (x-y) to a success pose, m; -1 when none is reachable.
 double shortestToSuccess(const Simulator& sim, const GroundTruthGoal& g, const Vec2& from);
 
+// The shortest flight from `from` (x-y) to a point at flight height within `range` (the
+// detector's reach) of a goal instance's box with a line of sight to its centre or its top face
+// (its centre and four points towards its edges): about the least search any planner could do
+// before the goal can be seen (the camera's field of view and the mask rules are left out; a
+// mask's median depth, not its nearest point, counts for the detector). -1 when no such point
+// is reachable.
+double shortestToView(const Simulator& sim, const GroundTruthGoal& g, const Vec2& from, double range);
+
 // A goal instance within found_radius of the pose and at least min_pixels of it in the frame.
 bool judgeFound(const GroundTruthGoal& g, const Pose& pose, const DepthFrame& frame, double found_radius, int min_pixels);
 

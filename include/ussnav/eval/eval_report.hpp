@@ -27,7 +27,8 @@ struct EpisodeRow {
   double spl = 0, path_length_m = 0, shortest_path_m = -1, time_s = 0, update_hz = 0, wall_s = 0;
   int frames = 0, collisions = 0;
   int labels_scored = 0, labels_correct = 0;  // region labels against ground truth (EpisodeResult)
-  double search_m = -1, approach_shortest_m = -1;  // the path split at the goal's first sighting (EpisodeResult)
+  // The path split at the goal's first sighting, and L* to a view of the goal (EpisodeResult).
+  double search_m = -1, approach_shortest_m = -1, view_shortest_m = -1;
   std::string key() const;  // world|goal|planner|seed
 };
 
