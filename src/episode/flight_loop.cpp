@@ -67,6 +67,7 @@ FlightLoop::FlightLoop(const EpisodeSpec& spec, const Config& cfg)
       look_steps_(ep_.look_around ? 4 : 0),
       slice_at_(std::getenv("USSNAV_DEBUG_SLICE")),
       debug_(std::getenv("USSNAV_DEBUG_EPISODE") != nullptr) {
+  if (ep_.look_around) look_spots_.push_back(start_.position);
   R_.world = spec.world_name;
   R_.goal = spec.goal;
   R_.planner = spec.planner;

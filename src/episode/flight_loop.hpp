@@ -10,7 +10,8 @@
 //   chooseObject()    a confirmed goal object: fly to an approach pose, or in transit to a
 //                     graph node near it                               (flight_loop_approach.cpp)
 //   keepApproaching() keep an approach's path clear; choose again when it is blocked
-//   lookAround()      three 120-degree turns at take-off (episode.look_around)
+//   lookAround()      three 120-degree turns at take-off (episode.look_around) and at reached
+//                     viewpoints far from earlier turns (episode.look_again_m)
 //   explore()         no object to approach: re-plan when needed (target, viewpoint, path),
 //                     spin when nothing is left, give up          (flight_loop_explore.cpp)
 //   finish()          metrics, stage times, the scene graph, region-label quality, the picture
@@ -129,6 +130,7 @@ class FlightLoop {
   double last_check_ = -1e9;  // the last re-plan or target check
   int spins_left_ = -1;       // -1: not spinning; else yaw steps left before giving up
   int look_steps_;            // episode.look_around: turns at take-off still to command, + 1
+  std::vector<Vec3> look_spots_;  // where the UAV turned round (episode.look_around, look_again_m)
 
   // Approaching a goal object: at an approach pose, or in transit to a graph node near it.
   bool approaching_ = false;

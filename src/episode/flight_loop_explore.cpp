@@ -1,4 +1,5 @@
-// FlightLoop's exploration (flight_loop.hpp): looking around at take-off, and flying to the
+// FlightLoop's exploration (flight_loop.hpp): looking around at take-off (and, with
+// episode.look_again_m, at viewpoints far from where it last did), and flying to the
 // targets the planner chooses (frontiers, camera-unseen patches) until none is left.
 
 #include <algorithm>
@@ -41,6 +42,20 @@ bool FlightLoop::needReplan(const char*& why) {
       if (debug_)
         std::fprintf(stderr, "[t=%.1f] reached but %s target still open (%.2f %.2f %.2f)%s\n", t_, toString(g_.kind),
                      g_.centroid.x(), g_.centroid.y(), g_.centroid.z(), second ? ": a closer look next" : "");
+    }
+    // episode.look_again_m: at a viewpoint far from every spot turned round at, turn round
+    // again before the next plan (the LiDAR maps all round, the camera sees 87 degrees).
+    if (need && off <= ep_.goal_tolerance && ep_.look_again_m > 0.0) {
+      const Vec3 here = uav_.pose().position;
+      const bool far = std::all_of(look_spots_.begin(), look_spots_.end(),
+                                   [&](const Vec3& s) { return (s - here).head<2>().norm() >= ep_.look_again_m; });
+      if (far) {  // look first, then plan from here (the turn may show the goal)
+        look_spots_.push_back(here), look_steps_ = 4;
+        uav_.setPath({});
+        g_.active = false;
+        need = false;
+        if (debug_) std::fprintf(stderr, "[t=%.1f] looking round again at (%.2f %.2f)\n", t_, here.x(), here.y());
+      }
     }
   }
   if (g_.active && !need && t_ - last_check_ >= ep_.replan_period_s) {

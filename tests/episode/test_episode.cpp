@@ -176,6 +176,47 @@ TEST(Episode, LookAroundSeesTheStartRoomBeforeTheFirstPlan) {
   EXPECT_LT(off_moved, moved);  // without it the UAV sets off at once
 }
 
+namespace {
+// Spots where the UAV turned full circle on the spot (a yaw sweep of at least 350 degrees with
+// the position within 5 cm: look_around's three 120-degree steps), as x-y.
+std::vector<Vec2> turnsOnTheSpot(const std::vector<TrajectorySample>& tr) {
+  std::vector<Vec2> out;
+  size_t i = 0;
+  while (i < tr.size()) {
+    size_t j = i + 1;
+    double swept = 0.0;
+    while (j < tr.size() && (tr[j].pose.position - tr[i].pose.position).norm() < 0.05)
+      swept += std::abs(wrapAngle(tr[j].pose.yaw - tr[j - 1].pose.yaw)), ++j;
+    if (swept >= deg2rad(350.0)) out.push_back(tr[i].pose.position.head<2>());
+    i = j;
+  }
+  return out;
+}
+}  // namespace
+
+TEST(Episode, LookAgainTurnsRoundAtViewpointsFarFromEarlierTurns) {
+  // No toilet in the two rooms: the UAV explores both. With episode.look_again_m it turns round
+  // at reached viewpoints at least that far from the start and from each other; without it
+  // only at the start (other turns on the spot, to face a viewpoint, sweep less).
+  Config cfg = testConfig();
+  cfg.episode.max_time_s = 60.0;
+  cfg.episode.look_around = true;
+  cfg.episode.look_again_m = 2.0;
+  const EpisodeRun on = runEpisode(twoRoomSpec("frontier", "toilet"), cfg);
+  const std::vector<Vec2> spots = turnsOnTheSpot(on.trajectory);
+  ASSERT_GE(spots.size(), 2u) << "no turn but the take-off one";
+  const Vec2 start = on.trajectory.front().pose.position.head<2>();
+  EXPECT_LT((spots.front() - start).norm(), 0.05);
+  for (size_t a = 0; a < spots.size(); ++a)
+    for (size_t b = a + 1; b < spots.size(); ++b) EXPECT_GE((spots[a] - spots[b]).norm(), 2.0 - 0.05);
+  EXPECT_EQ(on.result.collisions, 0);
+  cfg.episode.look_again_m = 0.0;
+  const EpisodeRun off = runEpisode(twoRoomSpec("frontier", "toilet"), cfg);
+  const std::vector<Vec2> off_spots = turnsOnTheSpot(off.trajectory);
+  ASSERT_EQ(off_spots.size(), 1u);
+  EXPECT_LT((off_spots.front() - start).norm(), 0.05);
+}
+
 TEST(Episode, AGoalSightedInAFewFramesIsApproachedAndDeclaredOnlyWhenSeenOftenEnough) {
   // From the start room the camera sees the bed through the door for a few frames of the
   // take-off turn: fewer than target_min_observations. The sighting is approached at once, with

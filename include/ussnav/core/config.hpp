@@ -357,6 +357,8 @@ struct EpisodeConfig {
                                       // the first plan: the camera sees the start room all round
   bool look_first = true;             // a goal object seen during those turns is approached only
                                       // after them, the nearest of all seen (turning costs no path)
+  double look_again_m = 0.0;          // > 0: turn round the same way at a reached viewpoint at least
+                                      // this far (in plan) from every spot looked round at; 0 = off
   template <class V> void visit(V& v) {
     v.field("max_time_s", max_time_s, 1.0, 1e6, "s");
     v.field("max_distance_m", max_distance_m, 0.0, 1e6, "m");
@@ -376,6 +378,7 @@ struct EpisodeConfig {
     v.field("close_look", close_look);
     v.field("look_around", look_around);
     v.field("look_first", look_first);
+    v.field("look_again_m", look_again_m, 0.0, 1000.0, "m");
   }
 };
 
