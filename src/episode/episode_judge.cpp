@@ -4,12 +4,22 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
 #include <map>
+#include <utility>
 
 #include "ussnav/episode/approach.hpp"
 
 namespace ussnav {
+namespace {
+
+// The first thing on the ray from `from` to `target` (and 0.1 m past it) is instance `id`.
+bool seesInstance(const GroundTruthGrid& gt, const Vec3& from, const Vec3& target, int id) {
+  const Vec3 to = target - from;
+  const GroundTruthGrid::Hit hit = gt.raycast(from, to.normalized(), to.norm() + 0.1);
+  return hit.hit && gt.instanceOfLabel(hit.label) == id;
+}
+
+}  // namespace
 
 GroundTruthGoal evaluateGoal(const Simulator& sim, const GoalMatcher& goal, const Pose& start, double found_radius,
                              const std::function<bool(const std::string&)>& in_room) {
@@ -27,9 +37,7 @@ GroundTruthGoal evaluateGoal(const Simulator& sim, const GoalMatcher& goal, cons
     for (const Object* o : g.instances) {
       const Vec3 q(p.x(), p.y(), std::clamp(o->box.center.z(), planner.flightZ() - 0.6, planner.flightZ() + kApproachAbove));
       if (o->box.distance(q) > found_radius) continue;
-      const Vec3 to = o->box.center - q;
-      const GroundTruthGrid::Hit hit = gt.raycast(q, to.normalized(), to.norm() + 0.1);
-      if (!hit.hit || gt.instanceOfLabel(hit.label) != o->id) continue;
+      if (!seesInstance(gt, q, o->box.center, o->id)) continue;
       goals.push_back(p);
       break;
     }
@@ -75,17 +83,10 @@ double shortestToView(const Simulator& sim, const GroundTruthGoal& g, const Vec2
   for (const Vec2& p : planner.freeSamples(2)) {
     const Vec3 q(p.x(), p.y(), planner.flightZ());
     bool seen = false;
-    for (size_t i = 0; i < g.instances.size() && !seen; ++i) {
-      if (g.instances[i]->box.distance(q) > range) continue;
-      for (const Vec3& target : marks[i]) {
-        const Vec3 to = target - q;
-        const GroundTruthGrid::Hit hit = gt.raycast(q, to.normalized(), to.norm() + 0.1);
-        if (hit.hit && gt.instanceOfLabel(hit.label) == g.instances[i]->id) {
-          seen = true;
-          break;
-        }
-      }
-    }
+    for (size_t i = 0; i < g.instances.size() && !seen; ++i)
+      if (g.instances[i]->box.distance(q) <= range)
+        seen = std::any_of(marks[i].begin(), marks[i].end(),
+                           [&](const Vec3& target) { return seesInstance(gt, q, target, g.instances[i]->id); });
     if (seen) views.push_back(p);
   }
   if (views.empty()) return -1.0;
