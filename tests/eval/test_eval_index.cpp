@@ -18,8 +18,8 @@ EpisodeRow row(const std::string& world, const std::string& goal, const std::str
   EpisodeRow r;
   r.world = world, r.goal = goal, r.planner = planner, r.split = "multi_room";
   r.success = success, r.spl = spl, r.path_length_m = 20.0, r.shortest_path_m = 10.0, r.time_s = 30.0;
-  r.end_reason = success ? "found" : "time_budget";
-  r.found_label = success ? "bed" : "";
+  r.end_reason = std::string(success ? "found" : "time_budget");
+  r.found_label = std::string(success ? "bed" : "");
   return r;
 }
 

@@ -29,7 +29,7 @@ EpisodeRow row(const std::string& planner, const std::string& split, bool succes
   EpisodeRow r;
   r.world = "w", r.goal = "bed", r.planner = planner, r.split = split, r.success = success, r.spl = spl;
   r.path_length_m = len, r.shortest_path_m = 5.0, r.time_s = 2 * len, r.frames = 10, r.collisions = 0;
-  r.end_reason = success ? "found" : "explored";
+  r.end_reason = std::string(success ? "found" : "explored");
   return r;
 }
 
