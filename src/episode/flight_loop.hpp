@@ -129,7 +129,7 @@ class FlightLoop {
   std::vector<ExplorationTarget> targets_;
   double last_check_ = -1e9;  // the last re-plan or target check
   int spins_left_ = -1;       // -1: not spinning; else yaw steps left before giving up
-  int look_steps_;            // episode.look_around: turns at take-off still to command, + 1
+  int look_steps_;            // turns on the spot still to command, + 1 (take-off, look_again_m)
   std::vector<Vec3> look_spots_;  // where the UAV turned round (episode.look_around, look_again_m)
 
   // Approaching a goal object: at an approach pose, or in transit to a graph node near it.
