@@ -72,6 +72,8 @@ class Db {
     ancestors_.clear();
     nouns_.clear();
     kin.clear();
+    noun_of_verb.clear();
+    verb_ancestors.clear();
     return openLocked();
   }
 
@@ -191,6 +193,8 @@ class Db {
 
  public:
   std::unordered_map<std::string, VerbKin> kin;  // verbKin() answers, by lower-case word
+  std::unordered_map<std::string, bool> noun_of_verb;                          // "label|verb"
+  std::unordered_map<std::string, std::vector<std::string>> verb_ancestors;  // "verb|levels"
 };
 
 std::string lower(std::string s) {
@@ -505,11 +509,19 @@ VerbKin verbKin(const std::string& word) {
 }
 
 bool nounOfVerb(const std::string& label, const std::string& verb) {
+  const std::string key = lower(label) + "|" + lower(verb);
+  if (const auto hit = withDb(
+          [&](Db& db) -> std::optional<bool> {
+            const auto it = db.noun_of_verb.find(key);
+            return it == db.noun_of_verb.end() ? std::nullopt : std::optional<bool>(it->second);
+          },
+          std::optional<bool>{}))
+    return *hit;
   const auto sense = lookupLabel(label);
   const std::string v = lower(verb);
   if (!sense || v.empty() || v.size() >= WORDBUF - 1) return false;
   return withDb(
-      [&](Db&) {
+      [&](Db& db) {
         std::string form = v;
         std::replace(form.begin(), form.end(), ' ', '_');
         char empty[1] = {0};
@@ -526,31 +538,150 @@ bool nounOfVerb(const std::string& label, const std::string& verb) {
           free_synset(t);
         }
         free_synset(s);
+        db.noun_of_verb[key] = found;
         return found;
       },
       false);
 }
 
-std::string usualNounLexfile(const std::string& word) {
+namespace {
+
+// Base forms of a verb: itself when indexed, else what verb morphology gives ("lying" -> "lie").
+std::vector<std::string> verbBasesLocked(const std::string& w) {
+  std::vector<std::string> out;
+  if (w.empty() || w.size() >= WORDBUF - 1) return out;
+  std::vector<char> buf(w.begin(), w.end());
+  buf.push_back('\0');
+  if (IndexPtr idx = index_lookup(buf.data(), VERB)) {
+    free_index(idx);
+    out.push_back(w);
+  }
+  for (char* m = morphstr(buf.data(), VERB); m && out.size() < 8; m = morphstr(nullptr, VERB))
+    if (std::find(out.begin(), out.end(), std::string(m)) == out.end()) out.emplace_back(m);
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> verbAncestors(const std::string& verb, int levels) {
+  const std::string w = lower(verb);
+  if (w.empty() || w.find(' ') != std::string::npos || levels <= 0) return {};
   return withDb(
-      [&](Db& db) -> std::string {
-        const auto picked = lookupNounLocked(db, word);
-        if (!picked) return {};
-        // The index word lookupNoun() read: "hands" has senses of its own (guardianship, a
-        // crew), but the thing it names is read from "hand".
-        std::string w = lower(word);
-        std::replace(w.begin(), w.end(), ' ', '_');
-        std::vector<std::string> forms{w};
-        for (const auto& base : db.baseForms(w)) forms.push_back(base);
-        for (const auto& form : forms) {
-          const std::vector<long> offs = db.senses(form);
-          if (std::find(offs.begin(), offs.end(), picked->offset) == offs.end()) continue;
-          const SynsetData& d = db.synset(offs.front());  // the most frequent sense
-          return d.fnum >= 0 && d.fnum < MAXFNUM && lexfiles[d.fnum] ? lexfiles[d.fnum] : "";
+      [&](Db& db) -> std::vector<std::string> {
+        const std::string key = w + "|" + std::to_string(levels);
+        if (const auto it = db.verb_ancestors.find(key); it != db.verb_ancestors.end()) return it->second;
+        std::vector<std::string> out;
+        char empty[1] = {0};
+        for (const auto& base : verbBasesLocked(w)) {
+          std::vector<char> buf(base.begin(), base.end());
+          buf.push_back('\0');
+          IndexPtr idx = index_lookup(buf.data(), VERB);
+          if (!idx) continue;
+          long off = idx->off_cnt > 0 ? long(idx->offset[0]) : -1;
+          free_index(idx);
+          for (int level = 0; level < levels && off >= 0; ++level) {
+            SynsetPtr s = read_synset(VERB, off, empty);
+            if (!s) break;
+            off = -1;
+            for (int i = 0; i < s->ptrcount; ++i)
+              if (s->ptrtyp[i] == HYPERPTR && s->ppos[i] == VERB) {
+                off = long(s->ptroff[i]);
+                break;
+              }
+            free_synset(s);
+            if (off >= 0) addSynsetWords(VERB, off, 0, out);
+          }
+          break;
+        }
+        return db.verb_ancestors.emplace(key, std::move(out)).first->second;
+      },
+      std::vector<std::string>{});
+}
+
+std::string phrasalVerb(const std::string& verb, const std::string& particle) {
+  const std::string w = lower(verb), p = lower(particle);
+  if (w.empty() || p.empty() || w.find(' ') != std::string::npos || p.find(' ') != std::string::npos) return {};
+  return withDb(
+      [&](Db&) -> std::string {
+        for (const auto& base : verbBasesLocked(w)) {
+          const std::string form = base + "_" + p;
+          if (form.size() >= WORDBUF - 1) continue;
+          std::vector<char> buf(form.begin(), form.end());
+          buf.push_back('\0');
+          if (IndexPtr idx = index_lookup(buf.data(), VERB)) {
+            free_index(idx);
+            return base + " " + p;
+          }
         }
         return {};
       },
       std::string());
+}
+
+bool namesPlace(const std::string& label) {
+  const auto sense = lookupLabel(label);
+  return sense && withDb([&](Db& db) { return db.isPlace(sense->offset); }, false);
+}
+
+std::vector<std::string> adjectiveGlossesOf(const std::string& word, int senses) {
+  const std::string w = lower(word);
+  if (w.empty() || w.size() >= WORDBUF - 1 || w.find(' ') != std::string::npos || senses <= 0) return {};
+  return withDb(
+      [&](Db&) -> std::vector<std::string> {
+        std::vector<std::string> out;
+        std::vector<char> buf(w.begin(), w.end());
+        buf.push_back('\0');
+        IndexPtr idx = index_lookup(buf.data(), ADJ);
+        if (!idx) return out;
+        char empty[1] = {0};
+        for (int i = 0; i < std::min(idx->off_cnt, senses); ++i)
+          if (SynsetPtr s = read_synset(ADJ, idx->offset[i], empty)) {
+            out.push_back(cleanGloss(s->defn ? s->defn : ""));
+            free_synset(s);
+          }
+        free_index(idx);
+        return out;
+      },
+      std::vector<std::string>{});
+}
+
+namespace {
+
+// The senses of the index word lookupNoun() read `word` from, and where its pick is among them:
+// "hands" has senses of its own (guardianship, a crew), but the thing it names is read from
+// "hand". Empty offsets when the word is no noun.
+std::pair<std::vector<long>, int> pickedAmongSensesLocked(Db& db, const std::string& word) {
+  const auto picked = lookupNounLocked(db, word);
+  if (!picked) return {{}, -1};
+  std::string w = lower(word);
+  std::replace(w.begin(), w.end(), ' ', '_');
+  std::vector<std::string> forms{w};
+  for (const auto& base : db.baseForms(w)) forms.push_back(base);
+  for (const auto& form : forms) {
+    std::vector<long> offs = db.senses(form);
+    const auto at = std::find(offs.begin(), offs.end(), picked->offset);
+    if (at == offs.end()) continue;
+    const int rank = int(at - offs.begin());
+    return {std::move(offs), rank};
+  }
+  return {{}, -1};
+}
+
+}  // namespace
+
+std::string usualNounLexfile(const std::string& word) {
+  return withDb(
+      [&](Db& db) -> std::string {
+        const auto [offs, rank] = pickedAmongSensesLocked(db, word);
+        if (offs.empty()) return {};
+        const SynsetData& d = db.synset(offs.front());  // the most frequent sense
+        return d.fnum >= 0 && d.fnum < MAXFNUM && lexfiles[d.fnum] ? lexfiles[d.fnum] : "";
+      },
+      std::string());
+}
+
+int pickedSenseRank(const std::string& word) {
+  return withDb([&](Db& db) { return pickedAmongSensesLocked(db, word).second; }, -1);
 }
 
 bool namesAnimal(const std::string& word) {

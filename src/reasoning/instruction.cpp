@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <map>
+#include <mutex>
 #include <set>
+#include <tuple>
 
 #include "ussnav/core/error.hpp"
 #include "ussnav/perception/wordnet.hpp"
@@ -21,7 +24,8 @@ const std::set<std::string>& fillers() {
       "we",    "you",   "it",   "that", "which",  "near", "nearest",  "closest",  "show",   "take", "bring",
       "search", "locate", "fly", "navigate", "this", "these", "those", "one", "from", "into", "by", "up",
       "do",    "does",  "have", "has",  "am",     "where's", "whats", "what", "your", "our", "their", "his",
-      "her",   "its",   "go", "head", "towards", "toward", "object", "thing", "area", "spot", "room", "use", "using"};
+      "her",   "its",   "go", "head", "towards", "toward", "object", "thing", "area", "spot", "room", "use", "using",
+      "i'm", "im", "i've", "i'd", "i'll", "we'd", "we're", "it's", "going", "gonna", "wanna", "feel", "feeling", "very", "really", "so", "bit", "little"};
   return f;
 }
 
@@ -101,6 +105,67 @@ std::set<std::string> kinVerbStems(const std::string& verb) {
   return out;
 }
 
+// Whether the request asks for a place: "somewhere to hang my coat", "where can I eat".
+bool place_asked(const std::vector<std::string>& words) {
+  return std::any_of(words.begin(), words.end(), [](const std::string& w) {
+    return w == "somewhere" || w == "anywhere" || w == "place" || w == "where" || w == "spot";
+  });
+}
+
+// Whether a phrase names a category of the priors (text cosine 0.85 or more).
+bool namesCategory(const CommonsensePriors& P, const std::string& phrase) {
+  return std::any_of(P.categories().begin(), P.categories().end(),
+                     [&](const std::string& c) { return P.encoder().similarity(phrase, c) >= 0.85; });
+}
+
+// Rewrites what the later steps could not read, in place:
+//  - a particle after a verb WordNet knows with it ("lie down", "heat up", "throw away") goes and
+//    the verb stays; when verb and particle closed up are a WordNet act ("work out" -> workout,
+//    "exercise"), the act's first other one-word name, as a verb, stands for both;
+//  - a word WordNet knows only as an adjective, whose definition says what it makes one want to
+//    do, becomes that act: "hungry" ("a need or desire TO EAT food") -> "to eat", "thirsty" ->
+//    "to drink".
+void rewritePhrasesAndStates(std::vector<std::string>& words) {
+  static const std::set<std::string> particles{"down", "up", "out", "away", "off", "on", "over"};
+  std::vector<std::string> out;
+  for (size_t i = 0; i < words.size(); ++i) {
+    const std::string& w = words[i];
+    // The verb: the word before the particle, or before the fillers before it ("throw this away").
+    size_t v = i;
+    while (v > 0 && fillers().count(words[v - 1]) && !verbCues().count(words[v - 1])) --v;
+    if (particles.count(w) && v > 0 && v == i && !fillers().count(words[v - 1]) && wordnet::knownAsVerb(words[v - 1]) &&
+        !wordnet::phrasalVerb(words[v - 1], w).empty()) {
+      if (const auto act = wordnet::lookupNoun(words[v - 1] + w); act && act->lexfile == "noun.act")
+        for (const auto& l : act->lemmas)
+          if (l != words[v - 1] + w && l.find(' ') == std::string::npos && wordnet::knownAsVerb(l)) {
+            out.back() = "to";
+            out.push_back(l);
+            break;
+          }
+      continue;
+    }
+    if (particles.count(w) && v > 0 && v < i && !fillers().count(words[v - 1]) && wordnet::knownAsVerb(words[v - 1]) &&
+        !wordnet::phrasalVerb(words[v - 1], w).empty())
+      continue;
+    if (!fillers().count(w) && !(i > 0 && verbCues().count(words[i - 1])) && !wordnet::lookupNoun(w)) {
+      std::string act;
+      for (const auto& gloss : wordnet::adjectiveGlossesOf(w, 2)) {
+        const auto g = instructionWords(gloss);
+        for (size_t k = 0; k + 1 < g.size() && act.empty(); ++k)
+          if (g[k] == "to" && wordnet::knownAsVerb(g[k + 1]) && !generalVerb(g[k + 1])) act = g[k + 1];
+        if (!act.empty()) break;
+      }
+      if (!act.empty()) {
+        out.push_back("to");
+        out.push_back(act);
+        continue;
+      }
+    }
+    out.push_back(w);
+  }
+  words = std::move(out);
+}
+
 struct RequestMatch {
   double score = 0.0;
   bool verb = false;    // a verb of the request found (the act)
@@ -122,38 +187,89 @@ struct RequestMatch {
 // and what it is on gets 0.5 more ("store clothes": a dresser, not a clothes dryer).
 // `object` false (room types, scored on our own descriptions, written as purposes): no
 // hypernym, no verb glosses, no kin.
-RequestMatch matchRequest(const std::set<std::string>& want, const std::set<std::string>& verbs,
-                          const std::string& name, const std::string& extra_text, bool object) {
+// What a name's words, synonyms and glosses say, whatever the request: read once per name and
+// kept (a request is scored against every category, and objects seen are judged again and again).
+struct NameFacts {
+  std::vector<std::string> tokens;  // the name's words
+  std::set<std::string> name_words, gloss_words, extra_words;
+  std::set<std::string> purposes, verb_forms, acts;  // acts: the gloss's verbs as written
+  std::set<std::string> purpose_acts;                 // the purposes as written ("to SLEEP")
+  bool head_only = false;                             // known by its head noun ("dog bed")
+};
+
+NameFacts readName(const std::string& name, const std::string& extra_text, bool object, bool hypernym) {
+  NameFacts f;
+  f.tokens = instructionWords(name);
   std::string synonyms;
   for (const auto& syn : wordnet::synonymsOf(name)) synonyms += syn + " ";
-  std::set<std::string> name_words = stems(name + " " + synonyms);
+  f.name_words = stems(name + " " + synonyms);
   if (object)
-    for (const auto& w : instructionWords(name))
-      for (const auto& part : compoundParts(w)) name_words.insert(stemWord(part));
+    for (const auto& w : f.tokens)
+      for (const auto& part : compoundParts(w)) f.name_words.insert(stemWord(part));
   std::string gloss = wordnet::glossOf(name) + " " + extra_text;
-  if (object)
+  if (object && hypernym)
     if (const auto h = wordnet::hypernymsOf(name); !h.empty()) gloss += " ; " + wordnet::glossOf(h.front());
-  const std::set<std::string> gloss_words = stems(gloss), extra_words = stems(extra_text);
-  std::set<std::string> purposes, verb_forms, acts;  // acts: the gloss's verbs as written
+  f.gloss_words = stems(gloss);
+  f.extra_words = stems(extra_text);
   // A name with an -ing word says what the thing is for: a dining table is for dining, and to
   // dine is to "have supper; eat dinner".
   if (object)
-    for (const auto& w : instructionWords(name))
+    for (const auto& w : f.tokens)
       if (w.size() > 5 && w.ends_with("ing"))
-        for (const auto& p : stems(wordnet::verbGlossOf(w))) purposes.insert(p);
+        for (const auto& p : stems(wordnet::verbGlossOf(w))) f.purposes.insert(p);
   const auto g = instructionWords(gloss);
   for (size_t i = 0; i < g.size(); ++i) {
-    if (i + 1 < g.size() && (g[i] == "to" || g[i] == "for")) purposes.insert(stemWord(g[i + 1])), acts.insert(g[i + 1]);
+    // "a pot for stewing OR BOILING": the purposes joined by "or" / "and" too.
+    if (i + 1 < g.size() && (g[i] == "to" || g[i] == "for"))
+      for (size_t k = i + 1; k < g.size(); k += 2) {
+        f.purposes.insert(stemWord(g[k])), f.acts.insert(g[k]), f.purpose_acts.insert(g[k]);
+        if (k + 2 >= g.size() || (g[k + 1] != "or" && g[k + 1] != "and")) break;
+      }
     const auto ends = [&](const char* x) { return g[i].size() > 4 && g[i].ends_with(x); };
-    if (ends("ing") || ends("ed")) verb_forms.insert(stemWord(g[i])), acts.insert(g[i]);
+    if (ends("ing") || ends("ed")) f.verb_forms.insert(stemWord(g[i])), f.acts.insert(g[i]);
     if (i + 1 < g.size() && (g[i] == "can" || g[i] == "could" || g[i] == "may" || g[i] == "will"))
-      verb_forms.insert(stemWord(g[i + 1])), acts.insert(g[i + 1]);  // "where several people can SIT"
+      f.verb_forms.insert(stemWord(g[i + 1])), f.acts.insert(g[i + 1]);  // "where several people can SIT"
   }
+  const auto r = wordnet::resolveLabel(name);
+  f.head_only = r && !r->modifiers.empty();
+  return f;
+}
+
+const NameFacts& nameFacts(const std::string& name, const std::string& extra_text, bool object, bool hypernym) {
+  static std::mutex mutex;
+  static std::map<std::tuple<std::string, std::string, bool, bool>, NameFacts> cache;
+  auto key = std::make_tuple(name, extra_text, object, hypernym);
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (const auto it = cache.find(key); it != cache.end()) return it->second;
+  }
+  NameFacts f = readName(name, extra_text, object, hypernym);
+  std::lock_guard<std::mutex> lock(mutex);
+  // std::map never moves its elements: a reference handed out stays good while others are added.
+  return cache.emplace(std::move(key), std::move(f)).first->second;
+}
+
+RequestMatch matchRequestIn(const std::set<std::string>& want, const std::set<std::string>& verbs,
+                            const std::string& name, const std::string& extra_text, bool object, bool hypernym) {
+  const NameFacts& f = nameFacts(name, extra_text, object, hypernym);
+  const auto& [tokens, name_words, gloss_words, extra_words, purposes, verb_forms, acts, purpose_acts, head_only] = f;
+  // The act in other words, as what the thing is for: to nap is to sleep, and a bed is "a place
+  // to SLEEP"; to sleep is to rest, and to rest is to lie (WordNet's verb hypernyms, three steps
+  // up), so a bed serves "somewhere to rest" and "I want to lie down" too.
+  const auto purpose_kin = [&](const std::string& w) {
+    if (!object || !verbs.count(w)) return false;
+    for (const auto& k : kinVerbStems(verbOfStem(w)))
+      if (purposes.count(k)) return true;
+    for (const auto& p : purpose_acts)
+      for (const auto& a : wordnet::verbAncestors(p, 3))
+        if (a.find(' ') == std::string::npos && !generalVerb(a) && stemWord(a) == w) return true;
+    return false;
+  };
   const auto kin = [&](const std::string& w) {
     if (!object || !verbs.count(w)) return false;
     const std::string verb = verbOfStem(w);
     for (const auto& k : kinVerbStems(verb))
-      if (purposes.count(k) || verb_forms.count(k)) return true;
+      if (verb_forms.count(k)) return true;
     for (const auto& n : wordnet::verbKin(verb).nouns)  // not the verb's own noun: a book is "a written work"
       if (n.find(' ') == std::string::npos && stemWord(n) != w && gloss_words.count(stemWord(n))) return true;
     for (const auto& a : acts)
@@ -161,30 +277,57 @@ RequestMatch matchRequest(const std::set<std::string>& want, const std::set<std:
     return false;
   };
   RequestMatch m;
-  int kin_verbs = 0;
+  int kin_verbs = 0, purpose_kin_verbs = 0;
   // A verb of the request that is the name's own word serves only when WordNet makes the thing
   // from the act: a shower is to shower, an iron to iron; a watch (the timepiece) is not to watch.
   const auto homograph = [&](const std::string& w) {
-    return object && verbs.count(w) && instructionWords(name).size() == 1 && stemWord(name) == w &&
+    return object && verbs.count(w) && tokens.size() == 1 && stemWord(name) == w &&
            !wordnet::nounOfVerb(name, verbOfStem(w));
   };
+  // A thing WordNet derives from the act names it: a printer is to print, a toaster to toast.
+  // So does a word of a compound name: a vacuum CLEANER is to clean.
+  const auto agent = [&](const std::string& w) {
+    if (!object || !verbs.count(w)) return false;
+    if (tokens.size() == 1) return stemWord(name) != w && wordnet::nounOfVerb(name, verbOfStem(w));
+    return std::any_of(tokens.begin(), tokens.end(), [&](const std::string& x) {
+      return stemWord(x) != w && wordnet::nounOfVerb(x, verbOfStem(w));
+    });
+  };
   for (const auto& w : want) {
-    const double s = name_words.count(w) && !homograph(w) ? 2.0
+    // A verb too general to name an act ("make" coffee) counts only in a name: a switch is "for
+    // making or breaking a connection", no place to make coffee.
+    const bool general = verbs.count(w) && generalVerb(verbOfStem(w));
+    const double s = (name_words.count(w) && !homograph(w)) || agent(w) ? 2.0
+                     : general                                          ? 0.0
                      : purposes.count(w) ? 1.5
                      : extra_words.count(w) || (gloss_words.count(w) && (!verbs.count(w) || verb_forms.count(w))) ? 1.0
                                                                                                                : 0.0;
     m.score += s;
     if (s > 0.0) (verbs.count(w) ? m.verb : m.object) = true;
     if (s > 0.0 && s < 2.0 && verbs.count(w)) m.purpose = true;
-    if (s == 0.0 && kin(w)) ++kin_verbs;
+    if (s == 0.0 && !general && purpose_kin(w)) ++purpose_kin_verbs;
+    else if (s == 0.0 && !general && kin(w)) ++kin_verbs;
   }
+  if (purpose_kin_verbs > 0) m.score += purpose_kin_verbs, m.verb = m.purpose = true;
   // The act in other words counts only beside what it is on: a bottle "can be capped", and to
   // cap is to "lie at the top of", but it is no place to lie down.
   if (m.object && kin_verbs > 0) m.score += kin_verbs, m.verb = m.purpose = true;
   if (object && m.verb && m.object) m.score += 0.5;
   // A compound known only by its head noun ("dog bed" -> bed) ranks after the head itself.
-  if (const auto r = wordnet::resolveLabel(name); r && !r->modifiers.empty()) m.score *= 0.9;
+  if (head_only) m.score *= 0.9;
   return m;
+}
+
+// What the thing's own name and gloss answer counts in full, what only its hypernym's gloss
+// answers 0.9: a dining table (to dine is to "eat dinner") before a butter knife (a table
+// knife is "used for eating") for "I'm hungry".
+RequestMatch matchRequest(const std::set<std::string>& want, const std::set<std::string>& verbs,
+                          const std::string& name, const std::string& extra_text, bool object) {
+  RequestMatch full = matchRequestIn(want, verbs, name, extra_text, object, object);
+  if (!object) return full;
+  const double own = matchRequestIn(want, verbs, name, extra_text, object, false).score;
+  full.score = own + 0.9 * (full.score - own);
+  return full;
 }
 
 double requestScore(const std::set<std::string>& want, const std::set<std::string>& verbs, const std::string& name,
@@ -244,6 +387,7 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
       words.erase(words.begin() + long(i), words.begin() + long(i + n));
       break;
     }
+  rewritePhrasesAndStates(words);
   // Content words, and which of them stand as verbs: a word WordNet knows as a verb after "to",
   // "I", "can", ... ("somewhere to wash", "where can I store food"), or first and followed by
   // another content word ("watch tv"). WordNet also has a print, a watch, a wash and a store
@@ -276,7 +420,11 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
       const bool has_verb = std::any_of(verb.begin() + long(i), verb.begin() + long(i + n), [](bool v) { return v; });
       if (has_verb && (n < 2 || !wordnet::lookupNoun(phrase))) continue;
       const auto sense = wordnet::lookupNoun(phrase);
-      bool is_named = sense && physicalLexfile(sense->lexfile) && !bodyPart(phrase);
+      // A word whose thing is a rare sense of it names none: a rest is mostly a remainder or a
+      // repose (a support is its sixth sense), water a substance, a document a writing; a tv is
+      // a broadcast first and a receiver next. A category's name is matched below.
+      bool is_named = sense && physicalLexfile(sense->lexfile) && !bodyPart(phrase) &&
+                      (wordnet::pickedSenseRank(phrase) <= 1 || physicalLexfile(wordnet::usualNounLexfile(phrase)));
       if (!is_named)
         for (const auto& c : P.categories())
           if (enc.similarity(phrase, c) >= 0.9) {
@@ -292,17 +440,15 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   // A light verb and an act ("take a bath", "have a nap") ask for what the act needs, when the
   // noun names no category itself: the act's WordNet gloss ("you soak and wash your body in a
   // bathtub") becomes the request (a bath's artifact sense is a laboratory vessel).
+  // The noun need not be a thing ("take a nap": a nap is mostly a sleep).
   std::vector<std::string> act;
-  if (!named.empty() && named.find(' ') == std::string::npos) {
-    const auto at = std::find(words.begin(), words.end(), named);
-    size_t k = size_t(at - words.begin());
-    while (k > 0 && (words[k - 1] == "a" || words[k - 1] == "an" || words[k - 1] == "the")) --k;
-    const bool after_light_verb = at != words.end() && k > 0 && lightVerbs().count(words[k - 1]);
-    const auto names_category = [&] {
-      return std::any_of(P.categories().begin(), P.categories().end(),
-                         [&](const std::string& c) { return enc.similarity(named, c) >= 0.85; });
-    };
-    if (after_light_verb && !names_category()) act = instructionWords(wordnet::actGlossOf(named));
+  for (size_t i = 0; i + 1 < words.size() && act.empty(); ++i) {
+    if (!lightVerbs().count(words[i])) continue;
+    size_t k = i + 1;
+    while (k + 1 < words.size() && (words[k] == "a" || words[k] == "an" || words[k] == "the")) ++k;
+    const std::string& noun = words[k];
+    if (fillers().count(noun) || (!named.empty() && named != noun) || namesCategory(P, noun)) continue;
+    act = instructionWords(wordnet::actGlossOf(noun));
   }
   if (!act.empty()) {
     named.clear();
@@ -332,6 +478,17 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   std::vector<std::string> vocab = P.categories();
   for (const auto& v : extra_vocabulary)
     if (std::find(vocab.begin(), vocab.end(), v) == vocab.end()) vocab.push_back(v);
+  // What WordNet derives from the act as a thing is a candidate too, in the vocabulary or not:
+  // "print a document" -> printer, "dry my hair" -> drier (a washer, read as a seal, is not).
+  const size_t known_vocab = vocab.size();  // those after it are derived from the act
+  for (const auto& v : verbs)
+    for (const auto& n : wordnet::verbKin(verbOfStem(v)).nouns) {
+      if (n.find(' ') != std::string::npos || stemWord(n) == v || std::find(vocab.begin(), vocab.end(), n) != vocab.end())
+        continue;
+      const auto sense = wordnet::lookupNoun(n);
+      if (sense && sense->lexfile == "noun.artifact" && !wordnet::namesPlace(n) && wordnet::nounOfVerb(n, verbOfStem(v)))
+        vocab.push_back(n);  // a brewery is no thing to brew tea with
+    }
   // A request that names what the act is on ("store CLOTHES", "watch TV") is answered only by
   // things that name it too: a watch is no place to watch tv, nor a dresser ("for keeping
   // clothes") one to keep shoes. Without any such thing, anything answering the act is kept.
@@ -342,9 +499,34 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   // washing machine.
   const bool names_object = !named.empty() || std::any_of(content.begin(), content.end(), bodyPart);
   I.object_named = names_object && std::any_of(matches.begin(), matches.end(), [](const RequestMatch& m) { return m.object; });
+  // What the act is on is no category ("cook DINNER", "boil WATER"): the things answering the
+  // act are what to look for, whether or not they name the object (a pan is for cooking, dinner
+  // or not); the object named only when there are none.
+  bool act_verb = false;  // a verb naming an act ("cook", not "make")
+  for (size_t i = 0; i < content.size(); ++i) act_verb = act_verb || (verb[i] && !generalVerb(content[i]));
+  bool act_on_other = !named.empty() && act_verb && !place_asked(words) && !namesCategory(P, named);
   std::vector<std::pair<double, std::string>> scored;
-  for (size_t i = 0; i < vocab.size(); ++i)
-    if (matches[i].score > 0.0 && (!I.object_named || matches[i].object)) scored.push_back({matches[i].score, vocab[i]});
+  bool known_scored = false;
+  const auto collect = [&](bool acting_only) {
+    for (size_t i = 0; i < vocab.size(); ++i) {
+      const RequestMatch& m = matches[i];
+      const bool keep = acting_only ? m.score > 0.0 && m.verb : m.score > 0.0 && (!I.object_named || m.object);
+      if (!keep) continue;
+      scored.push_back({m.score, vocab[i]});
+      known_scored = known_scored || (i < known_vocab && m.score >= 1.5);
+    }
+  };
+  collect(act_on_other);
+  // Nothing answers the act ("POUR a glass of wine"): what names the object (a wine bottle).
+  if (act_on_other && scored.empty()) act_on_other = false, collect(false);
+  // A thing derived from the act is looked for only when no category of the vocabulary answers
+  // the request by name or purpose ("boil water": a kettle, "a pot for stewing or boiling", not
+  // a boiler; "print a document": a printer, though a book is "printed on pages"); seen, it
+  // still serves (servesRequest).
+  if (known_scored)
+    std::erase_if(scored, [&](const auto& x) {
+      return std::find(vocab.begin(), vocab.begin() + long(known_vocab), x.second) == vocab.begin() + long(known_vocab);
+    });
   // Best first; among equals the shorter name ("shower" before "shower curtain").
   const auto words_in = [](const std::string& x) { return std::count(x.begin(), x.end(), ' '); };
   std::stable_sort(scored.begin(), scored.end(), [&](const auto& a, const auto& b) {
@@ -363,24 +545,33 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   // place ("somewhere to hang my coat", "where can I store clothes"), the object named is what
   // the act is on and only one candidate: the request is judged, so a coat rack, a wardrobe or
   // a bookshelf seen serves it though the priors' vocabulary has none.
-  const bool place = std::any_of(words.begin(), words.end(), [](const std::string& w) {
-    return w == "somewhere" || w == "anywhere" || w == "place" || w == "where" || w == "spot";
-  });
-  if (!named.empty() && place) {
+  if (!named.empty() && place_asked(words)) {
     if (std::none_of(scored.begin(), scored.end(), [&](const auto& x) { return stems(x.second) == stems(named); })) {
       const double own = score(named, "");
       const auto at = std::find_if(scored.begin(), scored.end(), [&](const auto& x) { return x.first <= own; });
       scored.insert(at, {own, named});
     }
+  } else if (act_on_other) {
+    // scored holds what answers the act
   } else if (!named.empty() && (scored.empty() || scored.front().first <= score(named, ""))) {
     I.targets.push_back(named);
     I.how = "named";
     return I;
   }
+  // A thing the act is on that could be an object in view stays a target after them: "watch
+  // tv" looks for a tv monitor ("for monitoring the program", and to monitor is to watch) and a
+  // tv; "clean the floor" for a vacuum cleaner and the floor.
+  const auto named_sense = named.empty() ? std::nullopt : wordnet::lookupNoun(named);
+  const bool keep_named = (act_on_other || place_asked(words)) && named_sense && named_sense->lexfile == "noun.artifact" &&
+                          !namesCategory(P, named);
   for (const auto& [s, v] : scored) {
-    if (s < scored.front().first || I.targets.size() >= 3) break;
+    if (s < scored.front().first || I.targets.size() >= (keep_named ? 2u : 3u)) break;
     I.targets.push_back(v);
   }
+  if (keep_named && !I.targets.empty() && std::find(I.targets.begin(), I.targets.end(), named) == I.targets.end())
+    I.targets.push_back(named);
+  I.act_required = act_on_other;
+  if (act_on_other) I.object_named = false;  // answered by the act, whatever it is on
   if (!I.targets.empty()) {
     I.how = "functional";
     I.score = scored.front().first;
@@ -419,15 +610,17 @@ bool servesRequest(const Instruction& I, const std::string& label) {
     need *= 0.9;
   const RequestMatch m = matchRequest(I, label);
   if (I.object_named && !m.object) return false;
+  if (I.act_required && !m.verb) return false;  // a floor lamp cleans no floor
   if (m.score >= need - 1e-9) return true;
   // A kind of a thing that serves the act serves it too: an armchair is a chair, and a chair
   // serves "somewhere to sit" (a seat is "designed for sitting on"). Only through what its gloss
   // says it is for: a plunger is a "hand tool", which names the hands but serves no "wash my
   // hands".
-  // And only for a request its targets answer as a purpose (1.5) at least: a mention of "work"
+  // And only for a request its targets answer as a purpose (1.5, or 0.9 x 1.5 through their
+  // hypernym, as a chair is a seat) at least: a mention of "work"
   // three glosses up does not make a pen serve "work out".
   const auto h = wordnet::hypernymsOf(label);
-  if (h.empty() || I.score < 1.5) return false;
+  if (h.empty() || I.score < 0.9 * 1.5 - 1e-9) return false;  // 0.9: a purpose its hypernym names
   const RequestMatch up = matchRequest(I, h.front());
   return up.purpose && (!I.object_named || up.object) && up.score >= I.score - 1e-9;
 }

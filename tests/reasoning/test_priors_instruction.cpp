@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <sstream>
 
 #include "ussnav/core/error.hpp"
 #include "ussnav/perception/wordnet.hpp"
@@ -218,8 +220,10 @@ TEST(Instruction, AVerbIsAnActionNotTheObjectSought) {
   const auto& P = *priors();
   const auto targets = [&](const char* text) { return interpretInstruction(text, P).targets; };
   using V = std::vector<std::string>;
-  EXPECT_EQ(targets("watch tv"), V{"tv"});
-  EXPECT_EQ(targets("I want to watch tv"), V{"tv"});
+  // "tv" names no category of the priors (their TVs are "tv monitor"s, "for monitoring the
+  // program being broadcast", and to monitor is to watch); it stays a target after them.
+  EXPECT_EQ(targets("watch tv"), (V{"tv monitor", "tv"}));
+  EXPECT_EQ(targets("I want to watch tv"), (V{"tv monitor", "tv"}));
   EXPECT_EQ(targets("I need to use the toilet"), V{"toilet"});
   EXPECT_EQ(targets("I want to read a book"), V{"book"});
   EXPECT_EQ(targets("I want to sit on the sofa"), V{"sofa"});
@@ -364,8 +368,8 @@ TEST(Instruction, APlaceForAnActOnAnObjectIsJudgedByTheActAndTheObject) {
   // A watch is no place to watch tv: a request that names its object is answered by things
   // that answer the object.
   const Instruction tv = interpretInstruction("somewhere to watch tv", P);
-  EXPECT_EQ(tv.targets.at(0), "tv");
-  EXPECT_TRUE(servesRequest(tv, "tv"));
+  EXPECT_TRUE(contains(tv.targets, "tv"));
+  EXPECT_TRUE(servesRequest(tv, "tv monitor"));
   EXPECT_FALSE(servesRequest(tv, "watch"));
   EXPECT_TRUE(servesRequest(interpretInstruction("where can I wash the dishes", P), "dishwasher"));
   // Without a place word the object named is still the target ("read a book" is the book).
@@ -389,6 +393,112 @@ TEST(Instruction, APlaceForAnActOnAnObjectIsJudgedByTheActAndTheObject) {
   EXPECT_TRUE(contains(kin.verbs, "keep"));
   EXPECT_TRUE(contains(kin.nouns, "storage"));
   EXPECT_TRUE(wordnet::verbKin("sofa").verbs.empty());
+}
+
+TEST(Instruction, VerbsAdjectivesAndPhrasalVerbsAreReadThroughWordNet) {
+  const auto& P = *priors();
+  const auto first = [&](const char* text) {
+    const Instruction I = interpretInstruction(text, P);
+    return I.targets.empty() ? std::string() : I.targets.front();
+  };
+  // To sleep is to rest, to rest is to lie (verb hypernyms): a bed, "a place to sleep", serves
+  // lying down and napping (to nap is to sleep). Was: a laundry hamper (a hamper is a shackle
+  // "used to tie down") and the literal "nap".
+  EXPECT_EQ(first("I want to lie down"), "bed");
+  EXPECT_EQ(first("I want to nap"), "bed");
+  EXPECT_EQ(first("I'd like to take a nap"), "bed");  // a nap is a sleep first, no thing
+  EXPECT_FALSE(servesRequest(interpretInstruction("I want to lie down", P), "laundry hamper"));
+  // A state read through its adjective's definition: hungry is "a desire to eat food".
+  const Instruction hungry = interpretInstruction("I'm hungry", P);
+  EXPECT_EQ(hungry.how, "functional");
+  EXPECT_TRUE(contains(hungry.targets, "dining table"));
+  EXPECT_EQ(hungry.room_hint, "dining room");
+  const std::string thirsty = first("I am thirsty");
+  EXPECT_TRUE(thirsty == "cup" || thirsty == "mug") << thirsty;
+  // A phrasal verb closed up into an act: "work out" -> workout, exercise; a dumbbell is "an
+  // exercising weight". Was: a shower curtain.
+  const Instruction gym = interpretInstruction("I want to work out", P);
+  EXPECT_EQ(gym.targets.front(), "dumbbell");
+  EXPECT_EQ(gym.room_hint, "gym");
+  // What the act is on is no category: the things doing the act are sought.
+  const Instruction cook = interpretInstruction("I want to cook dinner", P);  // was: "dinner"
+  EXPECT_EQ(cook.how, "functional");
+  EXPECT_EQ(cook.targets.front(), "pan");
+  EXPECT_TRUE(servesRequest(cook, "stove"));
+  EXPECT_FALSE(servesRequest(cook, "dining table"));  // names dinner, cooks nothing
+  const Instruction clean = interpretInstruction("clean the floor", P);
+  EXPECT_EQ(clean.targets.front(), "vacuum cleaner");  // a vacuum CLEANER: derived from to clean
+  EXPECT_FALSE(servesRequest(clean, "floor lamp"));
+  // A thing WordNet derives from the act, outside the vocabulary, when no category does the act
+  // by name or purpose ("print" -> printer) ...
+  EXPECT_EQ(first("I need to print a document"), "printer");  // was: "document"
+  // ... and only then: a kettle is "a pot for stewing or boiling", a boiler only serves.
+  const Instruction boil = interpretInstruction("boil water", P);
+  EXPECT_EQ(boil.targets.front(), "kettle");
+  EXPECT_TRUE(servesRequest(boil, "boiler"));
+  // Nor is a place derived from the act a thing to look for: a brewery brews no tea.
+  EXPECT_FALSE(contains(interpretInstruction("I want to brew some tea", P).targets, "brewery"));
+  // A general verb names no act: "make" coffee is not a light switch "for making or breaking a
+  // connection".
+  EXPECT_FALSE(contains(interpretInstruction("I want to make coffee", P).targets, "light switch"));
+
+  EXPECT_TRUE(contains(wordnet::verbAncestors("sleep", 3), "rest"));
+  EXPECT_TRUE(contains(wordnet::verbAncestors("sleeping", 3), "lie"));
+  EXPECT_TRUE(wordnet::verbAncestors("zorblax", 3).empty());
+  EXPECT_EQ(wordnet::phrasalVerb("lying", "down"), "lie down");
+  EXPECT_EQ(wordnet::phrasalVerb("sofa", "down"), "");
+  ASSERT_FALSE(wordnet::adjectiveGlossesOf("hungry", 2).empty());
+  EXPECT_NE(wordnet::adjectiveGlossesOf("hungry", 2).front().find("to eat"), std::string::npos);
+  EXPECT_EQ(wordnet::pickedSenseRank("tv"), 1);
+  EXPECT_GT(wordnet::pickedSenseRank("rest"), 1);
+  EXPECT_EQ(wordnet::pickedSenseRank("zorblax"), -1);
+  EXPECT_TRUE(wordnet::namesPlace("brewery"));
+  EXPECT_FALSE(wordnet::namesPlace("kettle"));
+}
+
+// Two lists of everyday requests judged by hand (tests/reasoning/data/): the first target must
+// be one of the acceptable categories, or name one at the goal's text cosine (0.85: "couch" is
+// a sofa), or the room constraint the one given. The floors are session 42's counts (before it:
+// 20 of 44 and 12 of 38); the misses are printed, to be read and bettered, not to be tuned to.
+TEST(Instruction, JudgedRequestsReadAtLeastAsWellAsBefore) {
+  const auto& P = *priors();
+  const auto judge = [&](const std::string& file) {
+    std::ifstream in(std::filesystem::path(USSNAV_SOURCE_DIR) / "tests/reasoning/data" / file);
+    EXPECT_TRUE(in.good()) << file;
+    int right = 0, total = 0;
+    for (std::string line; std::getline(in, line);) {
+      if (line.empty() || line[0] == '#') continue;
+      const auto tab = line.find('\t');
+      if (tab == std::string::npos) {
+        ADD_FAILURE() << file << ": no tab in '" << line << "'";
+        continue;
+      }
+      const std::string request = line.substr(0, tab);
+      std::vector<std::string> ok;
+      std::stringstream alts(line.substr(tab + 1));
+      for (std::string a; std::getline(alts, a, '|');) ok.push_back(a);
+      const Instruction I = interpretInstruction(request, P);
+      bool good = false;
+      for (const auto& a : ok) {
+        if (a.starts_with("room:")) good = good || I.room == a.substr(5);
+        else if (!I.targets.empty())
+          good = good || I.targets.front() == a || P.encoder().similarity(I.targets.front(), a) >= 0.85;
+      }
+      ++total;
+      right += good;
+      if (!good)
+        std::cout << "  " << file << ": '" << request << "' -> " << I.how << " "
+                  << (I.targets.empty() ? "room " + I.room : I.targets.front()) << "\n";
+    }
+    std::cout << file << ": " << right << " of " << total << " read right\n";
+    return std::pair{right, total};
+  };
+  const auto [dev, dev_total] = judge("requests_dev.tsv");
+  EXPECT_EQ(dev_total, 44);
+  EXPECT_GE(dev, 27);
+  const auto [held, held_total] = judge("requests_heldout.tsv");
+  EXPECT_EQ(held_total, 38);
+  EXPECT_GE(held, 16);
 }
 
 TEST(Instruction, UnknownWordsAreKeptLiterallyAndEmptyIsRejected) {

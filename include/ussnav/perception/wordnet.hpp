@@ -70,11 +70,29 @@ VerbKin verbKin(const std::string& word);
 // `verb` (or it from the noun): a shower (the fixture) is to shower, an iron (the appliance) to
 // iron, but a watch (the timepiece) is not to watch. False when either is unknown.
 bool nounOfVerb(const std::string& label, const std::string& verb);
+// All words of the hypernyms of the verb's most frequent sense, `levels` steps up, nearest
+// first (after verb morphology): verbAncestors("sleep", 3) = {"rest", "recumb", "repose",
+// "recline", "lie"}: to sleep is to rest, and to rest is to lie. Empty when unknown.
+std::vector<std::string> verbAncestors(const std::string& verb, int levels);
+// The base form of a phrasal verb WordNet knows, "" when it knows none: phrasalVerb("lying",
+// "down") = "lie down", phrasalVerb("heat", "up") = "heat up".
+std::string phrasalVerb(const std::string& verb, const std::string& particle);
+// True when the sense lookupLabel() gives the label is a room, a building or a building complex
+// ("brewery", "kitchen"), not a thing in one.
+bool namesPlace(const std::string& label);
+// Definitions of the word's first `senses` adjective senses, most frequent first (no
+// morphology): adjectiveGlossesOf("hungry", 2)[0] = "feeling hunger; feeling a need or desire
+// to eat food". Empty when WordNet has no such adjective.
+std::vector<std::string> adjectiveGlossesOf(const std::string& word, int senses);
 // Lexicographer file of the most frequent sense of the index word lookupNoun() reads the word
 // from: "noun.body" for "hands" (read as "hand", whose usual sense is the body part, though
 // lookupNoun() picks a clock's hand) and "teeth"; "noun.artifact" for "bed". Empty when the
 // word is no WordNet noun.
 std::string usualNounLexfile(const std::string& word);
+// Where the sense lookupNoun() picks is in WordNet's frequency order of the word's senses, 0 =
+// the most frequent: 1 for "tv" (a television receiver; a television broadcast comes first), 5
+// for "rest" (a support; a remainder comes first). -1 when the word is no noun.
+int pickedSenseRank(const std::string& word);
 // True when the word's most frequent noun sense is an animal ("dog", "cats", "pet"; not "guest"
 // or "office"), whatever sense lookupNoun() prefers indoors (it reads "dog" as an andiron).
 bool namesAnimal(const std::string& word);
