@@ -618,6 +618,21 @@ std::string phrasalVerb(const std::string& verb, const std::string& particle) {
       std::string());
 }
 
+std::vector<std::string> nounForms(const std::string& word) {
+  std::string w = lower(word);
+  std::replace(w.begin(), w.end(), ' ', '_');
+  return withDb(
+      [&](Db& db) -> std::vector<std::string> {
+        std::vector<std::string> out;
+        if (!db.senses(w).empty()) out.push_back(underscoresToSpaces(w));
+        for (const auto& base : db.baseForms(w))
+          if (!db.senses(base).empty() && std::find(out.begin(), out.end(), underscoresToSpaces(base)) == out.end())
+            out.push_back(underscoresToSpaces(base));
+        return out;
+      },
+      std::vector<std::string>{});
+}
+
 bool namesPlace(const std::string& label) {
   const auto sense = lookupLabel(label);
   return sense && withDb([&](Db& db) { return db.isPlace(sense->offset); }, false);

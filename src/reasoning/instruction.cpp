@@ -188,7 +188,8 @@ struct RequestMatch {
 // `object` false (room types, scored on our own descriptions, written as purposes): no
 // hypernym, no verb glosses, no kin.
 // What a name's words, synonyms and glosses say, whatever the request: read once per name and
-// kept (a request is scored against every category, and objects seen are judged again and again).
+// kept for the process (a request is scored against every category, and objects seen are judged
+// again and again; WordNet's data does not change while it runs).
 struct NameFacts {
   std::vector<std::string> tokens;  // the name's words
   std::set<std::string> name_words, gloss_words, extra_words;
@@ -478,6 +479,36 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   std::vector<std::string> vocab = P.categories();
   for (const auto& v : extra_vocabulary)
     if (std::find(vocab.begin(), vocab.end(), v) == vocab.end()) vocab.push_back(v);
+  // A WordNet compound of what the act is on and the act's own noun or its doer is the thing
+  // for it: "wash the dishes" -> dishwasher, "brush my teeth" -> toothbrush, "make coffee" ->
+  // coffee maker, "heat water" -> water heater. It names both, so it sets no bar for what else
+  // serves (below): a coat rack still serves "somewhere to hang my coat" beside a coat hanger.
+  std::set<std::string> compounds;
+  for (size_t i = 0; i < content.size(); ++i) {
+    if (verb[i]) continue;
+    std::vector<long> added;  // senses already in: "dishwasher" and "dish washer" are one
+    for (const auto& on : wordnet::nounForms(content[i]))
+    for (const auto& v : verbs) {
+      if (on.find(' ') != std::string::npos) continue;
+      const std::string base = verbOfStem(v);
+      std::vector<std::string> doers{base, base + "er", base + "r"};
+      for (const auto& n : wordnet::verbKin(base).nouns) doers.push_back(n);
+      for (const auto& d : doers) {
+        if (d.find(' ') != std::string::npos) continue;  // the compound's being in WordNet is the test
+        for (const std::string& c : {on + d, on + " " + d}) {
+          const auto sense = wordnet::lookupNoun(c);
+          const auto& l = sense ? sense->lemmas : std::vector<std::string>{};
+          if (sense && sense->lexfile == "noun.artifact" && std::find(l.begin(), l.end(), c) != l.end() &&
+              std::find(added.begin(), added.end(), sense->offset) == added.end() &&
+              std::find(vocab.begin(), vocab.end(), c) == vocab.end() && !namesCategory(P, c)) {
+            vocab.push_back(c);
+            compounds.insert(c);
+            added.push_back(sense->offset);
+          }
+        }
+      }
+    }
+  }
   // What WordNet derives from the act as a thing is a candidate too, in the vocabulary or not:
   // "print a document" -> printer, "dry my hair" -> drier (a washer, read as a seal, is not).
   const size_t known_vocab = vocab.size();  // those after it are derived from the act
@@ -575,6 +606,11 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   if (!I.targets.empty()) {
     I.how = "functional";
     I.score = scored.front().first;
+    for (const auto& [s, v] : scored)
+      if (!compounds.count(v)) {
+        I.score = std::min(I.score, s);  // the best score of the rest
+        break;
+      }
     return I;
   }
   if (!I.room_hint.empty() && I.room.empty()) {

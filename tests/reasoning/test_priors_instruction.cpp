@@ -441,6 +441,14 @@ TEST(Instruction, VerbsAdjectivesAndPhrasalVerbsAreReadThroughWordNet) {
   // A general verb names no act: "make" coffee is not a light switch "for making or breaking a
   // connection".
   EXPECT_FALSE(contains(interpretInstruction("I want to make coffee", P).targets, "light switch"));
+  // A WordNet compound of what the act is on and the act's noun or doer is the thing for it,
+  // outside the vocabulary too (was: the dishes, a scrub brush, a watering can, "coffee").
+  EXPECT_EQ(first("where can I wash the dishes"), "dishwasher");
+  EXPECT_EQ(first("brush my teeth"), "toothbrush");
+  EXPECT_EQ(first("heat water"), "water heater");
+  EXPECT_EQ(first("I want to make coffee"), "coffee maker");
+  EXPECT_EQ(first("I want to dry my clothes"), "clothes dryer");  // a category: no "clothes drier" beside it
+  EXPECT_EQ(interpretInstruction("I want to dry my clothes", P).targets.size(), 1u);
 
   EXPECT_TRUE(contains(wordnet::verbAncestors("sleep", 3), "rest"));
   EXPECT_TRUE(contains(wordnet::verbAncestors("sleeping", 3), "lie"));
@@ -452,6 +460,9 @@ TEST(Instruction, VerbsAdjectivesAndPhrasalVerbsAreReadThroughWordNet) {
   EXPECT_EQ(wordnet::pickedSenseRank("tv"), 1);
   EXPECT_GT(wordnet::pickedSenseRank("rest"), 1);
   EXPECT_EQ(wordnet::pickedSenseRank("zorblax"), -1);
+  EXPECT_TRUE(contains(wordnet::nounForms("teeth"), "tooth"));
+  EXPECT_EQ(wordnet::nounForms("dishes"), std::vector<std::string>{"dish"});
+  EXPECT_TRUE(wordnet::nounForms("zorblax").empty());
   EXPECT_TRUE(wordnet::namesPlace("brewery"));
   EXPECT_FALSE(wordnet::namesPlace("kettle"));
 }
@@ -459,7 +470,8 @@ TEST(Instruction, VerbsAdjectivesAndPhrasalVerbsAreReadThroughWordNet) {
 // Two lists of everyday requests judged by hand (tests/reasoning/data/): the first target must
 // be one of the acceptable categories, or name one at the goal's text cosine (0.85: "couch" is
 // a sofa), or the room constraint the one given. The floors are session 42's counts (before it:
-// 20 of 44 and 12 of 38); the misses are printed, to be read and bettered, not to be tuned to.
+// 20 of 44 and 12 of 38, or 21 of 44 with the two answers the dev list gained); the misses are
+// printed, to be read and bettered, not to be tuned to.
 TEST(Instruction, JudgedRequestsReadAtLeastAsWellAsBefore) {
   const auto& P = *priors();
   const auto judge = [&](const std::string& file) {
@@ -495,7 +507,7 @@ TEST(Instruction, JudgedRequestsReadAtLeastAsWellAsBefore) {
   };
   const auto [dev, dev_total] = judge("requests_dev.tsv");
   EXPECT_EQ(dev_total, 44);
-  EXPECT_GE(dev, 27);
+  EXPECT_GE(dev, 30);
   const auto [held, held_total] = judge("requests_heldout.tsv");
   EXPECT_EQ(held_total, 38);
   EXPECT_GE(held, 16);

@@ -77,6 +77,9 @@ std::vector<std::string> verbAncestors(const std::string& verb, int levels);
 // The base form of a phrasal verb WordNet knows, "" when it knows none: phrasalVerb("lying",
 // "down") = "lie down", phrasalVerb("heat", "up") = "heat up".
 std::string phrasalVerb(const std::string& verb, const std::string& particle);
+// The index nouns a word can be read as: itself, and what noun morphology makes of it:
+// "teeth" -> {"teeth", "tooth"}, "dishes" -> {"dish"}. Empty when it is no noun.
+std::vector<std::string> nounForms(const std::string& word);
 // True when the sense lookupLabel() gives the label is a room, a building or a building complex
 // ("brewery", "kitchen"), not a thing in one.
 bool namesPlace(const std::string& label);

@@ -3,19 +3,26 @@
 // "find a bed", "somewhere to sleep", "the sofa in the living room", "I want to attend a
 // meeting". Offline, from WordNet and the commonsense priors, no model:
 //  1. a room phrase naming a room type or alias of room_types.tsv ("in the living room") becomes
-//     the room constraint;
+//     the room constraint; a particle after a verb WordNet knows with it goes ("lie down",
+//     "work out" -> "to exercise"), and a word that is only an adjective whose definition names
+//     an act becomes it ("hungry": "a desire to eat food" -> "to eat");
 //  2. a named object: the longest word n-gram that WordNet knows as a physical thing (artifact,
 //     plant, object, food) or that matches a category of the priors by text cosine -> targets;
 //     a verb ("watch" tv, "to use" the toilet) starts none unless the n-gram is a WordNet noun,
 //     and with a verb present step 3 may name a category that fits verb and object better
 //     ("wash clothes" -> washing machine); asked for a place ("somewhere to hang my coat") the
 //     object is only one candidate of step 3 and the request is judged (a coat rack serves it);
+//     an object that names no category ("cook dinner", "clean the floor") leaves the search to
+//     what does the act (a pan; a vacuum cleaner), and only that serves (act_required). A word
+//     names a thing only when that is one of its first two WordNet senses ("a rest" is none);
 //  3. otherwise a functional request: the content words (stemmed, filler words dropped) are
 //     looked up in each candidate category's name, synonyms and WordNet gloss ("bed: a piece of
 //     furniture that provides a place to sleep": 2 for a name, 1.5 for a purpose "to / for W",
-//     1 for a mention or for the act in other words, wordnet::verbKin); the best-scoring
-//     categories become the
-//     targets, the best-scoring room type a hint;
+//     1 for a mention or for the act in other words, wordnet::verbKin, or for a purpose whose
+//     verb hypernyms hold the act: to sleep is to rest and to lie; 0.9 of it where only the
+//     hypernym's gloss answers); nouns WordNet derives from the act are candidates too ("print"
+//     -> printer), looked for when no category answers by name or purpose; the best-scoring
+//     categories become the targets, the best-scoring room type a hint;
 //  4. nothing recognised: the content words themselves are the target (an unknown label can
 //     still be matched by the text encoder).
 // Candidate categories: the priors' tables plus `extra_vocabulary` (e.g. labels in a scene graph).
