@@ -171,6 +171,7 @@ struct RequestMatch {
   bool verb = false;    // a verb of the request found (the act)
   bool object = false;  // a word of the request that is no verb found (what the act is on)
   bool purpose = false;  // a verb found in what the gloss says the thing is for, not in its name
+  bool act_named = false;  // a verb found in its name: the thing is named for the act
 };
 
 // Step 3's score of one name against the request's stemmed content words `want` (of them
@@ -257,10 +258,16 @@ RequestMatch matchRequestIn(const std::set<std::string>& want, const std::set<st
   // The act in other words, as what the thing is for: to nap is to sleep, and a bed is "a place
   // to SLEEP"; to sleep is to rest, and to rest is to lie (WordNet's verb hypernyms, three steps
   // up), so a bed serves "somewhere to rest" and "I want to lie down" too.
+  // So does a noun of the act as a purpose: a toilet is "for defecation and URINATION", and
+  // urination is what to pee is.
   const auto purpose_kin = [&](const std::string& w) {
     if (!object || !verbs.count(w)) return false;
     for (const auto& k : kinVerbStems(verbOfStem(w)))
       if (purposes.count(k)) return true;
+    for (const auto& n : wordnet::verbKin(verbOfStem(w)).nouns)  // after "to" / "for" only
+      if (n.find(' ') == std::string::npos && stemWord(n) != w &&
+          std::any_of(purpose_acts.begin(), purpose_acts.end(), [&](const std::string& p) { return stemWord(p) == stemWord(n); }))
+        return true;
     for (const auto& p : purpose_acts)
       for (const auto& a : wordnet::verbAncestors(p, 3))
         if (a.find(' ') == std::string::npos && !generalVerb(a) && stemWord(a) == w) return true;
@@ -306,6 +313,7 @@ RequestMatch matchRequestIn(const std::set<std::string>& want, const std::set<st
     m.score += s;
     if (s > 0.0) (verbs.count(w) ? m.verb : m.object) = true;
     if (s > 0.0 && s < 2.0 && verbs.count(w)) m.purpose = true;
+    if (s == 2.0 && verbs.count(w)) m.act_named = true;
     if (s == 0.0 && !general && purpose_kin(w)) ++purpose_kin_verbs;
     else if (s == 0.0 && !general && kin(w)) ++kin_verbs;
   }
@@ -537,6 +545,7 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   for (size_t i = 0; i < content.size(); ++i) act_verb = act_verb || (verb[i] && !generalVerb(content[i]));
   bool act_on_other = !named.empty() && act_verb && !place_asked(words) && !namesCategory(P, named);
   std::vector<std::pair<double, std::string>> scored;
+  std::set<std::string> act_named;
   bool known_scored = false;
   const auto collect = [&](bool acting_only) {
     for (size_t i = 0; i < vocab.size(); ++i) {
@@ -544,6 +553,7 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
       const bool keep = acting_only ? m.score > 0.0 && m.verb : m.score > 0.0 && (!I.object_named || m.object);
       if (!keep) continue;
       scored.push_back({m.score, vocab[i]});
+      if (m.act_named) act_named.insert(vocab[i]);
       known_scored = known_scored || (i < known_vocab && m.score >= 1.5);
     }
   };
@@ -558,10 +568,14 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
     std::erase_if(scored, [&](const auto& x) {
       return std::find(vocab.begin(), vocab.begin() + long(known_vocab), x.second) == vocab.begin() + long(known_vocab);
     });
-  // Best first; among equals the shorter name ("shower" before "shower curtain").
+  // Best first; among equals one named for the act ("wash my clothes": a WASHING machine before
+  // a CLOTHES dryer, "a dryer that dries clothes wetted by washing"), then the shorter name
+  // ("shower" before "shower curtain").
   const auto words_in = [](const std::string& x) { return std::count(x.begin(), x.end(), ' '); };
   std::stable_sort(scored.begin(), scored.end(), [&](const auto& a, const auto& b) {
-    return a.first != b.first ? a.first > b.first : words_in(a.second) < words_in(b.second);
+    if (a.first != b.first) return a.first > b.first;
+    if (act_named.count(a.second) != act_named.count(b.second)) return act_named.count(a.second) > act_named.count(b.second);
+    return words_in(a.second) < words_in(b.second);
   });
   double best_room = 0.0;
   for (const RoomType& r : P.rooms()) {
