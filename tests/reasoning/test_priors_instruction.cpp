@@ -475,7 +475,7 @@ TEST(Instruction, VerbsAdjectivesAndPhrasalVerbsAreReadThroughWordNet) {
 // Two lists of everyday requests judged by hand (tests/reasoning/data/): the first target must
 // be one of the acceptable categories, or name one at the goal's text cosine (0.85: "couch" is
 // a sofa), or the room constraint the one given. The floors are session 42's counts (before it:
-// 20 of 44 and 12 of 38, or 21 of 44 with the two answers the dev list gained; the held-out
+// 20 of 44 and 12 of 38, the two answers the dev list gained included; the held-out
 // list read 16 of 38 at its first run, 18 after two rules written having seen its misses); the
 // misses are printed, to be read and bettered, not to be tuned to.
 TEST(Instruction, JudgedRequestsReadAtLeastAsWellAsBefore) {
