@@ -4,43 +4,17 @@
 
 #include <algorithm>
 #include <cctype>
-#include <map>
-#include <mutex>
 #include <set>
-#include <tuple>
 
+#include "request_match.hpp"
+#include "request_words.hpp"
 #include "ussnav/core/error.hpp"
 #include "ussnav/perception/wordnet.hpp"
 
 namespace ussnav {
 namespace {
 
-const std::set<std::string>& fillers() {
-  static const std::set<std::string> f{
-      "a",     "an",    "the",  "to",   "i",      "me",   "my",       "want",     "wants",  "need",  "needs",
-      "would", "like",  "find", "go",   "get",    "look", "looking",  "for",      "some",   "somewhere",
-      "something", "place", "where", "can", "could", "please", "in",  "on",       "at",     "of",    "with",
-      "and",   "or",    "is",   "are",  "be",     "there", "any",     "anywhere", "let",    "lets",  "us",
-      "we",    "you",   "it",   "that", "which",  "near", "nearest",  "closest",  "show",   "take", "bring",
-      "search", "locate", "fly", "navigate", "this", "these", "those", "one", "from", "into", "by", "up",
-      "do",    "does",  "have", "has",  "am",     "where's", "whats", "what", "your", "our", "their", "his",
-      "her",   "its",   "go", "head", "towards", "toward", "object", "thing", "area", "spot", "room", "use", "using",
-      "i'm", "im", "i've", "i'd", "i'll", "we'd", "we're", "it's", "going", "gonna", "wanna", "feel", "feeling", "very", "really", "so", "bit", "little"};
-  return f;
-}
-
-// Words after which a verb stands: "to print", "I wash", "can eat", "please watch", "let's eat".
-const std::set<std::string>& verbCues() {
-  static const std::set<std::string> c{"to",   "i",     "we",    "you",  "can",  "could", "please", "lets", "let's",
-                                       "i'd",  "i'll",  "we'd",  "must", "will", "shall", "should", "let"};
-  return c;
-}
-
-// Verbs that take their meaning from the act after them: "take a bath", "have a nap".
-const std::set<std::string>& lightVerbs() {
-  static const std::set<std::string> v{"take", "have", "get", "grab", "taking", "having"};
-  return v;
-}
+using namespace request;
 
 bool physicalLexfile(const std::string& lf) {
   return lf == "noun.artifact" || lf == "noun.plant" || lf == "noun.object" || lf == "noun.food";
@@ -65,44 +39,6 @@ int exactRoom(const CommonsensePriors& P, const std::string& phrase) {
       if (a == phrase) return int(i);
   }
   return -1;
-}
-
-std::set<std::string> stems(const std::string& text) {
-  std::set<std::string> out;
-  for (const auto& w : instructionWords(text))
-    if (!fillers().count(w)) out.insert(stemWord(w));
-  return out;
-}
-
-// A closed compound's parts, when both are WordNet nouns of four letters or more: a bookshelf
-// is named for books and a coatrack for coats ("carpet" and "cupboard" stay whole).
-std::vector<std::string> compoundParts(const std::string& word) {
-  for (size_t k = 4; k + 4 <= word.size(); ++k) {
-    const std::string head = word.substr(0, k), tail = word.substr(k);
-    if (wordnet::lookupNoun(head) && wordnet::lookupNoun(tail))
-      return {head, tail};
-  }
-  return {};
-}
-
-// Verbs too general to stand for another act: "eat" is to "take in", "relax" to "turn".
-bool generalVerb(const std::string& w) {
-  static const std::set<std::string> g{"make", "move", "change", "put", "set", "cause", "act",
-                                       "hold", "give", "be",   "turn", "become"};
-  return g.count(w) || g.count(stemWord(w)) || fillers().count(w) || lightVerbs().count(w);
-}
-
-// The verb a stem stands for: the request keeps stems ("stor" for "store", "sit" for "sitting").
-std::string verbOfStem(const std::string& stem) {
-  return wordnet::knownAsVerb(stem) || !wordnet::knownAsVerb(stem + "e") ? stem : stem + "e";
-}
-
-// Stems of the single-word verbs that name a verb's act (wordnet::verbKin), general ones dropped.
-std::set<std::string> kinVerbStems(const std::string& verb) {
-  std::set<std::string> out;
-  for (const auto& v : wordnet::verbKin(verb).verbs)
-    if (v.find(' ') == std::string::npos && !generalVerb(v)) out.insert(stemWord(v));
-  return out;
 }
 
 // Whether the request asks for a place: "somewhere to hang my coat", "where can I eat".
@@ -164,184 +100,6 @@ void rewritePhrasesAndStates(std::vector<std::string>& words) {
     out.push_back(w);
   }
   words = std::move(out);
-}
-
-struct RequestMatch {
-  double score = 0.0;
-  bool verb = false;    // a verb of the request found (the act)
-  bool object = false;  // a word of the request that is no verb found (what the act is on)
-  bool purpose = false;  // a verb found in what the gloss says the thing is for, not in its name
-  bool act_named = false;  // a verb found in its name: the thing is named for the act
-};
-
-// Step 3's score of one name against the request's stemmed content words `want` (of them
-// `verbs` stand as verbs): 2 per word in the name, its synonyms or a closed compound's parts
-// (book-shelf), 1.5 per purpose ("a place TO SLEEP", "used FOR COOKING"), 1 per other mention,
-// in the name's WordNet gloss, its nearest hypernym's gloss (a chair is "a seat", a seat
-// "furniture that is designed for sitting on") and `extra_text`; an -ing word of the name adds
-// its verb's gloss as purposes ("dining" table: to dine is to "eat dinner"). A verb of the
-// request counts in a gloss only where the gloss uses it as a verb: a purpose, an -ing / -ed
-// form, after "can" ("where several people can SIT"); a book is "a written work", not somewhere
-// to work. Failing those, 1 where the gloss names the act in other words (wordnet::verbKin: a
-// dresser is "for KEEPING clothes" and to store is to keep; a refrigerator is where food "can be
-// STORED" for "keep food cold"; a wardrobe "provides STORAGE"). A name that answers both the act
-// and what it is on gets 0.5 more ("store clothes": a dresser, not a clothes dryer).
-// `object` false (room types, scored on our own descriptions, written as purposes): no
-// hypernym, no verb glosses, no kin.
-// What a name's words, synonyms and glosses say, whatever the request: read once per name and
-// kept for the process (a request is scored against every category, and objects seen are judged
-// again and again; WordNet's data does not change while it runs).
-struct NameFacts {
-  std::vector<std::string> tokens;  // the name's words
-  std::set<std::string> name_words, gloss_words, extra_words;
-  std::set<std::string> purposes, verb_forms, acts;  // acts: the gloss's verbs as written
-  std::set<std::string> purpose_acts;                 // the purposes as written ("to SLEEP")
-  bool head_only = false;                             // known by its head noun ("dog bed")
-};
-
-NameFacts readName(const std::string& name, const std::string& extra_text, bool object, bool hypernym) {
-  NameFacts f;
-  f.tokens = instructionWords(name);
-  std::string synonyms;
-  for (const auto& syn : wordnet::synonymsOf(name)) synonyms += syn + " ";
-  f.name_words = stems(name + " " + synonyms);
-  if (object)
-    for (const auto& w : f.tokens)
-      for (const auto& part : compoundParts(w)) f.name_words.insert(stemWord(part));
-  std::string gloss = wordnet::glossOf(name) + " " + extra_text;
-  if (object && hypernym)
-    if (const auto h = wordnet::hypernymsOf(name); !h.empty()) gloss += " ; " + wordnet::glossOf(h.front());
-  f.gloss_words = stems(gloss);
-  f.extra_words = stems(extra_text);
-  // A name with an -ing word says what the thing is for: a dining table is for dining, and to
-  // dine is to "have supper; eat dinner".
-  if (object)
-    for (const auto& w : f.tokens)
-      if (w.size() > 5 && w.ends_with("ing"))
-        for (const auto& p : stems(wordnet::verbGlossOf(w))) f.purposes.insert(p);
-  const auto g = instructionWords(gloss);
-  for (size_t i = 0; i < g.size(); ++i) {
-    // "a pot for stewing OR BOILING": the purposes joined by "or" / "and" too.
-    if (i + 1 < g.size() && (g[i] == "to" || g[i] == "for"))
-      for (size_t k = i + 1; k < g.size(); k += 2) {
-        f.purposes.insert(stemWord(g[k])), f.acts.insert(g[k]), f.purpose_acts.insert(g[k]);
-        if (k + 2 >= g.size() || (g[k + 1] != "or" && g[k + 1] != "and")) break;
-      }
-    const auto ends = [&](const char* x) { return g[i].size() > 4 && g[i].ends_with(x); };
-    if (ends("ing") || ends("ed")) f.verb_forms.insert(stemWord(g[i])), f.acts.insert(g[i]);
-    if (i + 1 < g.size() && (g[i] == "can" || g[i] == "could" || g[i] == "may" || g[i] == "will"))
-      f.verb_forms.insert(stemWord(g[i + 1])), f.acts.insert(g[i + 1]);  // "where several people can SIT"
-  }
-  const auto r = wordnet::resolveLabel(name);
-  f.head_only = r && !r->modifiers.empty();
-  return f;
-}
-
-const NameFacts& nameFacts(const std::string& name, const std::string& extra_text, bool object, bool hypernym) {
-  static std::mutex mutex;
-  static std::map<std::tuple<std::string, std::string, bool, bool>, NameFacts> cache;
-  auto key = std::make_tuple(name, extra_text, object, hypernym);
-  {
-    std::lock_guard<std::mutex> lock(mutex);
-    if (const auto it = cache.find(key); it != cache.end()) return it->second;
-  }
-  NameFacts f = readName(name, extra_text, object, hypernym);
-  std::lock_guard<std::mutex> lock(mutex);
-  // std::map never moves its elements: a reference handed out stays good while others are added.
-  return cache.emplace(std::move(key), std::move(f)).first->second;
-}
-
-RequestMatch matchRequestIn(const std::set<std::string>& want, const std::set<std::string>& verbs,
-                            const std::string& name, const std::string& extra_text, bool object, bool hypernym) {
-  const NameFacts& f = nameFacts(name, extra_text, object, hypernym);
-  const auto& [tokens, name_words, gloss_words, extra_words, purposes, verb_forms, acts, purpose_acts, head_only] = f;
-  // The act in other words, as what the thing is for: to nap is to sleep, and a bed is "a place
-  // to SLEEP"; to sleep is to rest, and to rest is to lie (WordNet's verb hypernyms, three steps
-  // up), so a bed serves "somewhere to rest" and "I want to lie down" too.
-  // So does a noun of the act as a purpose: a toilet is "for defecation and URINATION", and
-  // urination is what to pee is.
-  const auto purpose_kin = [&](const std::string& w) {
-    if (!object || !verbs.count(w)) return false;
-    for (const auto& k : kinVerbStems(verbOfStem(w)))
-      if (purposes.count(k)) return true;
-    for (const auto& n : wordnet::verbKin(verbOfStem(w)).nouns)  // after "to" / "for" only
-      if (n.find(' ') == std::string::npos && stemWord(n) != w &&
-          std::any_of(purpose_acts.begin(), purpose_acts.end(), [&](const std::string& p) { return stemWord(p) == stemWord(n); }))
-        return true;
-    for (const auto& p : purpose_acts)
-      for (const auto& a : wordnet::verbAncestors(p, 3))
-        if (a.find(' ') == std::string::npos && !generalVerb(a) && stemWord(a) == w) return true;
-    return false;
-  };
-  const auto kin = [&](const std::string& w) {
-    if (!object || !verbs.count(w)) return false;
-    const std::string verb = verbOfStem(w);
-    for (const auto& k : kinVerbStems(verb))
-      if (verb_forms.count(k)) return true;
-    for (const auto& n : wordnet::verbKin(verb).nouns)  // not the verb's own noun: a book is "a written work"
-      if (n.find(' ') == std::string::npos && stemWord(n) != w && gloss_words.count(stemWord(n))) return true;
-    for (const auto& a : acts)
-      if (!generalVerb(a) && kinVerbStems(a).count(w)) return true;
-    return false;
-  };
-  RequestMatch m;
-  int kin_verbs = 0, purpose_kin_verbs = 0;
-  // A verb of the request that is the name's own word serves only when WordNet makes the thing
-  // from the act: a shower is to shower, an iron to iron; a watch (the timepiece) is not to watch.
-  const auto homograph = [&](const std::string& w) {
-    return object && verbs.count(w) && tokens.size() == 1 && stemWord(name) == w &&
-           !wordnet::nounOfVerb(name, verbOfStem(w));
-  };
-  // A thing WordNet derives from the act names it: a printer is to print, a toaster to toast.
-  // So does a word of a compound name: a vacuum CLEANER is to clean.
-  const auto agent = [&](const std::string& w) {
-    if (!object || !verbs.count(w)) return false;
-    if (tokens.size() == 1) return stemWord(name) != w && wordnet::nounOfVerb(name, verbOfStem(w));
-    return std::any_of(tokens.begin(), tokens.end(), [&](const std::string& x) {
-      return stemWord(x) != w && wordnet::nounOfVerb(x, verbOfStem(w));
-    });
-  };
-  for (const auto& w : want) {
-    // A verb too general to name an act ("make" coffee) counts only in a name: a switch is "for
-    // making or breaking a connection", no place to make coffee.
-    const bool general = verbs.count(w) && generalVerb(verbOfStem(w));
-    const double s = (name_words.count(w) && !homograph(w)) || agent(w) ? 2.0
-                     : general                                          ? 0.0
-                     : purposes.count(w) ? 1.5
-                     : extra_words.count(w) || (gloss_words.count(w) && (!verbs.count(w) || verb_forms.count(w))) ? 1.0
-                                                                                                               : 0.0;
-    m.score += s;
-    if (s > 0.0) (verbs.count(w) ? m.verb : m.object) = true;
-    if (s > 0.0 && s < 2.0 && verbs.count(w)) m.purpose = true;
-    if (s == 2.0 && verbs.count(w)) m.act_named = true;
-    if (s == 0.0 && !general && purpose_kin(w)) ++purpose_kin_verbs;
-    else if (s == 0.0 && !general && kin(w)) ++kin_verbs;
-  }
-  if (purpose_kin_verbs > 0) m.score += purpose_kin_verbs, m.verb = m.purpose = true;
-  // The act in other words counts only beside what it is on: a bottle "can be capped", and to
-  // cap is to "lie at the top of", but it is no place to lie down.
-  if (m.object && kin_verbs > 0) m.score += kin_verbs, m.verb = m.purpose = true;
-  if (object && m.verb && m.object) m.score += 0.5;
-  // A compound known only by its head noun ("dog bed" -> bed) ranks after the head itself.
-  if (head_only) m.score *= 0.9;
-  return m;
-}
-
-// What the thing's own name and gloss answer counts in full, what only its hypernym's gloss
-// answers 0.9: a dining table (to dine is to "eat dinner") before a butter knife (a table
-// knife is "used for eating") for "I'm hungry".
-RequestMatch matchRequest(const std::set<std::string>& want, const std::set<std::string>& verbs,
-                          const std::string& name, const std::string& extra_text, bool object) {
-  RequestMatch full = matchRequestIn(want, verbs, name, extra_text, object, object);
-  if (!object) return full;
-  const double own = matchRequestIn(want, verbs, name, extra_text, object, false).score;
-  full.score = own + 0.9 * (full.score - own);
-  return full;
-}
-
-double requestScore(const std::set<std::string>& want, const std::set<std::string>& verbs, const std::string& name,
-                    const std::string& extra_text, bool object) {
-  return matchRequest(want, verbs, name, extra_text, object).score;
 }
 
 }  // namespace
@@ -482,7 +240,7 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   I.request.assign(want.begin(), want.end());
   I.request_verbs.assign(verbs.begin(), verbs.end());
   const auto score = [&](const std::string& name, const std::string& extra_text, bool object = true) {
-    return requestScore(want, verbs, name, extra_text, object);
+    return matchRequest(want, verbs, name, extra_text, object).score;
   };
   std::vector<std::string> vocab = P.categories();
   for (const auto& v : extra_vocabulary)
@@ -639,14 +397,14 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
 }
 
 namespace {
-RequestMatch matchRequest(const Instruction& I, const std::string& label) {
+RequestMatch matchInstruction(const Instruction& I, const std::string& label) {
   const std::set<std::string> want(I.request.begin(), I.request.end()), verbs(I.request_verbs.begin(), I.request_verbs.end());
-  return matchRequest(want, verbs, label, "", true);
+  return request::matchRequest(want, verbs, label, "", true);
 }
 }  // namespace
 
 double requestScore(const Instruction& I, const std::string& label) {
-  return I.how == "functional" ? matchRequest(I, label).score : 0.0;
+  return I.how == "functional" ? matchInstruction(I, label).score : 0.0;
 }
 
 bool servesRequest(const Instruction& I, const std::string& label) {
@@ -658,7 +416,7 @@ bool servesRequest(const Instruction& I, const std::string& label) {
   if (const auto r = wordnet::resolveLabel(label); r && !r->modifiers.empty() &&
                                                    std::none_of(r->modifiers.begin(), r->modifiers.end(), wordnet::namesAnimal))
     need *= 0.9;
-  const RequestMatch m = matchRequest(I, label);
+  const RequestMatch m = matchInstruction(I, label);
   if (I.object_named && !m.object) return false;
   if (I.act_required && !m.verb) return false;  // a floor lamp cleans no floor
   if (m.score >= need - 1e-9) return true;
@@ -671,7 +429,7 @@ bool servesRequest(const Instruction& I, const std::string& label) {
   // three glosses up does not make a pen serve "work out".
   const auto h = wordnet::hypernymsOf(label);
   if (h.empty() || I.score < 0.9 * 1.5 - 1e-9) return false;  // 0.9: a purpose its hypernym names
-  const RequestMatch up = matchRequest(I, h.front());
+  const RequestMatch up = matchInstruction(I, h.front());
   return up.purpose && (!I.object_named || up.object) && up.score >= I.score - 1e-9;
 }
 
