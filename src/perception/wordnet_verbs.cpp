@@ -1,0 +1,276 @@
+// Verbs, acts and adjectives of WordNet (see ussnav/perception/wordnet.hpp): what the
+// instruction reader needs beyond noun senses.
+
+#include "ussnav/perception/wordnet.hpp"
+
+#include "wordnet_db.hpp"
+
+namespace ussnav::wordnet {
+
+using namespace detail;
+
+bool knownAsVerb(const std::string& word) {
+  const std::string w = lower(word);
+  if (w.empty() || w.size() >= WORDBUF - 1 || w.find(' ') != std::string::npos) return false;
+  return withDb(
+      [&](Db&) {
+        const auto indexed = [](const std::string& v) {
+          std::vector<char> buf(v.begin(), v.end());
+          buf.push_back('\0');
+          IndexPtr idx = index_lookup(buf.data(), VERB);
+          if (!idx) return false;
+          free_index(idx);
+          return true;
+        };
+        if (indexed(w)) return true;
+        std::vector<char> buf(w.begin(), w.end());
+        buf.push_back('\0');
+        for (char* m = morphstr(buf.data(), VERB); m; m = morphstr(nullptr, VERB))
+          if (indexed(m)) return true;
+        return false;
+      },
+      false);
+}
+
+std::string actGlossOf(const std::string& word) {
+  return withDb(
+      [&](Db& db) -> std::string {
+        std::string w = lower(word);
+        if (w.empty() || w.find(' ') != std::string::npos) return {};
+        std::vector<long> offs = db.senses(w);
+        if (offs.empty())
+          for (const auto& base : db.baseForms(w))
+            if (offs = db.senses(base); !offs.empty()) break;
+        for (long off : offs) {
+          const SynsetData& d = db.synset(off);
+          if (d.fnum >= 0 && d.fnum < MAXFNUM && lexfiles[d.fnum] && std::string(lexfiles[d.fnum]) == "noun.act")
+            return cleanGloss(d.gloss);
+        }
+        return {};
+      },
+      std::string());
+}
+
+std::string verbGlossOf(const std::string& word) {
+  const std::string w = lower(word);
+  if (w.empty() || w.size() >= WORDBUF - 1 || w.find(' ') != std::string::npos) return {};
+  return withDb(
+      [&](Db&) -> std::string {
+        const auto firstSense = [](const std::string& v) -> std::string {
+          std::vector<char> buf(v.begin(), v.end());
+          buf.push_back('\0');
+          IndexPtr idx = index_lookup(buf.data(), VERB);
+          if (!idx) return {};
+          std::string gloss;
+          if (idx->off_cnt > 0) {
+            char empty[1] = {0};
+            if (SynsetPtr s = read_synset(VERB, idx->offset[0], empty)) {
+              gloss = cleanGloss(s->defn ? s->defn : "");
+              free_synset(s);
+            }
+          }
+          free_index(idx);
+          return gloss;
+        };
+        if (std::string g = firstSense(w); !g.empty()) return g;
+        std::vector<char> buf(w.begin(), w.end());
+        buf.push_back('\0');
+        for (char* m = morphstr(buf.data(), VERB); m; m = morphstr(nullptr, VERB))
+          if (std::string g = firstSense(m); !g.empty()) return g;
+        return {};
+      },
+      std::string());
+}
+
+namespace {
+
+// Adds the words of synset (pos, offset) to `out`: all of them, or only the `which`-th (1-based).
+void addSynsetWords(int pos, long offset, int which, std::vector<std::string>& out) {
+  char empty[1] = {0};
+  SynsetPtr s = read_synset(pos, offset, empty);
+  if (!s) return;
+  for (int i = 0; i < s->wcount; ++i)
+    if (which <= 0 || which == i + 1) {
+      std::string w = underscoresToSpaces(lower(s->words[i]));
+      if (std::find(out.begin(), out.end(), w) == out.end()) out.push_back(std::move(w));
+    }
+  free_synset(s);
+}
+
+VerbKin verbKinLocked(const std::string& v) {
+  VerbKin k;
+  std::vector<char> buf(v.begin(), v.end());
+  buf.push_back('\0');
+  IndexPtr idx = index_lookup(buf.data(), VERB);
+  if (!idx) return k;
+  char empty[1] = {0};
+  for (int sense = 0; sense < std::min(idx->off_cnt, 2); ++sense) {
+    SynsetPtr s = read_synset(VERB, idx->offset[sense], empty);
+    if (!s) continue;
+    if (sense == 0) addSynsetWords(VERB, idx->offset[0], 0, k.verbs);
+    for (int i = 0; i < s->ptrcount; ++i) {
+      if (sense == 0 && s->ptrtyp[i] == HYPERPTR && s->ppos[i] == VERB) addSynsetWords(VERB, s->ptroff[i], 1, k.verbs);
+      // A derivation is lexical: from one word of this synset to one of the other's.
+      if (s->ptrtyp[i] == DERIVATION && s->ppos[i] == NOUN) addSynsetWords(NOUN, s->ptroff[i], s->pto[i], k.nouns);
+    }
+    free_synset(s);
+  }
+  free_index(idx);
+  return k;
+}
+
+}  // namespace
+
+VerbKin verbKin(const std::string& word) {
+  const std::string w = lower(word);
+  if (w.empty() || w.size() >= WORDBUF - 1 || w.find(' ') != std::string::npos) return {};
+  return withDb(
+      [&](Db& db) -> VerbKin {
+        if (const auto it = db.kin.find(w); it != db.kin.end()) return it->second;
+        VerbKin k = verbKinLocked(w);
+        if (k.verbs.empty()) {
+          std::vector<char> buf(w.begin(), w.end());
+          buf.push_back('\0');
+          std::vector<std::string> bases;
+          for (char* m = morphstr(buf.data(), VERB); m; m = morphstr(nullptr, VERB)) bases.emplace_back(m);
+          for (const auto& b : bases)
+            if (k = verbKinLocked(b); !k.verbs.empty()) break;
+        }
+        return db.kin.emplace(w, std::move(k)).first->second;
+      },
+      VerbKin{});
+}
+
+bool nounOfVerb(const std::string& label, const std::string& verb) {
+  const std::string key = lower(label) + "|" + lower(verb);
+  if (const auto hit = withDb(
+          [&](Db& db) -> std::optional<bool> {
+            const auto it = db.noun_of_verb.find(key);
+            return it == db.noun_of_verb.end() ? std::nullopt : std::optional<bool>(it->second);
+          },
+          std::optional<bool>{}))
+    return *hit;
+  const auto sense = lookupLabel(label);
+  const std::string v = lower(verb);
+  if (!sense || v.empty() || v.size() >= WORDBUF - 1) return false;
+  return withDb(
+      [&](Db& db) {
+        std::string form = v;
+        std::replace(form.begin(), form.end(), ' ', '_');
+        char empty[1] = {0};
+        SynsetPtr s = read_synset(NOUN, sense->offset, empty);
+        if (!s) return false;
+        bool found = false;
+        for (int i = 0; i < s->ptrcount && !found; ++i) {
+          if (s->ptrtyp[i] != DERIVATION || s->ppos[i] != VERB) continue;
+          SynsetPtr t = read_synset(VERB, s->ptroff[i], empty);
+          if (!t) continue;
+          // A derivation is lexical: it joins one word of each synset (pto, 1-based; 0 = all).
+          for (int k = 0; k < t->wcount && !found; ++k)
+            found = (s->pto[i] <= 0 || s->pto[i] == k + 1) && lower(t->words[k]) == form;
+          free_synset(t);
+        }
+        free_synset(s);
+        db.noun_of_verb[key] = found;
+        return found;
+      },
+      false);
+}
+
+namespace {
+
+// Base forms of a verb: itself when indexed, else what verb morphology gives ("lying" -> "lie").
+std::vector<std::string> verbBasesLocked(const std::string& w) {
+  std::vector<std::string> out;
+  if (w.empty() || w.size() >= WORDBUF - 1) return out;
+  std::vector<char> buf(w.begin(), w.end());
+  buf.push_back('\0');
+  if (IndexPtr idx = index_lookup(buf.data(), VERB)) {
+    free_index(idx);
+    out.push_back(w);
+  }
+  for (char* m = morphstr(buf.data(), VERB); m && out.size() < 8; m = morphstr(nullptr, VERB))
+    if (std::find(out.begin(), out.end(), std::string(m)) == out.end()) out.emplace_back(m);
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> verbAncestors(const std::string& verb, int levels) {
+  const std::string w = lower(verb);
+  if (w.empty() || w.find(' ') != std::string::npos || levels <= 0) return {};
+  return withDb(
+      [&](Db& db) -> std::vector<std::string> {
+        const std::string key = w + "|" + std::to_string(levels);
+        if (const auto it = db.verb_ancestors.find(key); it != db.verb_ancestors.end()) return it->second;
+        std::vector<std::string> out;
+        char empty[1] = {0};
+        for (const auto& base : verbBasesLocked(w)) {
+          std::vector<char> buf(base.begin(), base.end());
+          buf.push_back('\0');
+          IndexPtr idx = index_lookup(buf.data(), VERB);
+          if (!idx) continue;
+          long off = idx->off_cnt > 0 ? long(idx->offset[0]) : -1;
+          free_index(idx);
+          for (int level = 0; level < levels && off >= 0; ++level) {
+            SynsetPtr s = read_synset(VERB, off, empty);
+            if (!s) break;
+            off = -1;
+            for (int i = 0; i < s->ptrcount; ++i)
+              if (s->ptrtyp[i] == HYPERPTR && s->ppos[i] == VERB) {
+                off = long(s->ptroff[i]);
+                break;
+              }
+            free_synset(s);
+            if (off >= 0) addSynsetWords(VERB, off, 0, out);
+          }
+          break;
+        }
+        return db.verb_ancestors.emplace(key, std::move(out)).first->second;
+      },
+      std::vector<std::string>{});
+}
+
+std::string phrasalVerb(const std::string& verb, const std::string& particle) {
+  const std::string w = lower(verb), p = lower(particle);
+  if (w.empty() || p.empty() || w.find(' ') != std::string::npos || p.find(' ') != std::string::npos) return {};
+  return withDb(
+      [&](Db&) -> std::string {
+        for (const auto& base : verbBasesLocked(w)) {
+          const std::string form = base + "_" + p;
+          if (form.size() >= WORDBUF - 1) continue;
+          std::vector<char> buf(form.begin(), form.end());
+          buf.push_back('\0');
+          if (IndexPtr idx = index_lookup(buf.data(), VERB)) {
+            free_index(idx);
+            return base + " " + p;
+          }
+        }
+        return {};
+      },
+      std::string());
+}
+
+std::vector<std::string> adjectiveGlossesOf(const std::string& word, int senses) {
+  const std::string w = lower(word);
+  if (w.empty() || w.size() >= WORDBUF - 1 || w.find(' ') != std::string::npos || senses <= 0) return {};
+  return withDb(
+      [&](Db&) -> std::vector<std::string> {
+        std::vector<std::string> out;
+        std::vector<char> buf(w.begin(), w.end());
+        buf.push_back('\0');
+        IndexPtr idx = index_lookup(buf.data(), ADJ);
+        if (!idx) return out;
+        char empty[1] = {0};
+        for (int i = 0; i < std::min(idx->off_cnt, senses); ++i)
+          if (SynsetPtr s = read_synset(ADJ, idx->offset[i], empty)) {
+            out.push_back(cleanGloss(s->defn ? s->defn : ""));
+            free_synset(s);
+          }
+        free_index(idx);
+        return out;
+      },
+      std::vector<std::string>{});
+}
+
+}  // namespace ussnav::wordnet
