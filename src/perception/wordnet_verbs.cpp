@@ -9,27 +9,34 @@ namespace ussnav::wordnet {
 
 using namespace detail;
 
+namespace {
+
+// The verbs WordNet indexes that a word is: itself, and what verb morphology makes of it
+// ("lying" -> "lie", "ate" -> "eat"). Empty when none.
+std::vector<std::string> verbBasesLocked(const std::string& w) {
+  std::vector<std::string> out;
+  if (w.empty() || w.size() >= WORDBUF - 1) return out;
+  const auto indexed = [](const std::string& v) {
+    std::vector<char> buf(v.begin(), v.end());
+    buf.push_back('\0');
+    IndexPtr idx = index_lookup(buf.data(), VERB);
+    if (idx) free_index(idx);
+    return idx != nullptr;
+  };
+  if (indexed(w)) out.push_back(w);
+  std::vector<char> buf(w.begin(), w.end());
+  buf.push_back('\0');
+  for (char* m = morphstr(buf.data(), VERB); m && out.size() < 8; m = morphstr(nullptr, VERB))
+    if (std::find(out.begin(), out.end(), std::string(m)) == out.end() && indexed(m)) out.emplace_back(m);
+  return out;
+}
+
+}  // namespace
+
 bool knownAsVerb(const std::string& word) {
   const std::string w = lower(word);
-  if (w.empty() || w.size() >= WORDBUF - 1 || w.find(' ') != std::string::npos) return false;
-  return withDb(
-      [&](Db&) {
-        const auto indexed = [](const std::string& v) {
-          std::vector<char> buf(v.begin(), v.end());
-          buf.push_back('\0');
-          IndexPtr idx = index_lookup(buf.data(), VERB);
-          if (!idx) return false;
-          free_index(idx);
-          return true;
-        };
-        if (indexed(w)) return true;
-        std::vector<char> buf(w.begin(), w.end());
-        buf.push_back('\0');
-        for (char* m = morphstr(buf.data(), VERB); m; m = morphstr(nullptr, VERB))
-          if (indexed(m)) return true;
-        return false;
-      },
-      false);
+  if (w.empty() || w.find(' ') != std::string::npos) return false;
+  return withDb([&](Db&) { return !verbBasesLocked(w).empty(); }, false);
 }
 
 std::string actGlossOf(const std::string& word) {
@@ -72,11 +79,8 @@ std::string verbGlossOf(const std::string& word) {
           free_index(idx);
           return gloss;
         };
-        if (std::string g = firstSense(w); !g.empty()) return g;
-        std::vector<char> buf(w.begin(), w.end());
-        buf.push_back('\0');
-        for (char* m = morphstr(buf.data(), VERB); m; m = morphstr(nullptr, VERB))
-          if (std::string g = firstSense(m); !g.empty()) return g;
+        for (const auto& base : verbBasesLocked(w))
+          if (std::string g = firstSense(base); !g.empty()) return g;
         return {};
       },
       std::string());
@@ -127,15 +131,9 @@ VerbKin verbKin(const std::string& word) {
   return withDb(
       [&](Db& db) -> VerbKin {
         if (const auto it = db.kin.find(w); it != db.kin.end()) return it->second;
-        VerbKin k = verbKinLocked(w);
-        if (k.verbs.empty()) {
-          std::vector<char> buf(w.begin(), w.end());
-          buf.push_back('\0');
-          std::vector<std::string> bases;
-          for (char* m = morphstr(buf.data(), VERB); m; m = morphstr(nullptr, VERB)) bases.emplace_back(m);
-          for (const auto& b : bases)
-            if (k = verbKinLocked(b); !k.verbs.empty()) break;
-        }
+        VerbKin k;
+        for (const auto& base : verbBasesLocked(w))
+          if (k = verbKinLocked(base); !k.verbs.empty()) break;
         return db.kin.emplace(w, std::move(k)).first->second;
       },
       VerbKin{});
@@ -176,25 +174,6 @@ bool nounOfVerb(const std::string& label, const std::string& verb) {
       },
       false);
 }
-
-namespace {
-
-// Base forms of a verb: itself when indexed, else what verb morphology gives ("lying" -> "lie").
-std::vector<std::string> verbBasesLocked(const std::string& w) {
-  std::vector<std::string> out;
-  if (w.empty() || w.size() >= WORDBUF - 1) return out;
-  std::vector<char> buf(w.begin(), w.end());
-  buf.push_back('\0');
-  if (IndexPtr idx = index_lookup(buf.data(), VERB)) {
-    free_index(idx);
-    out.push_back(w);
-  }
-  for (char* m = morphstr(buf.data(), VERB); m && out.size() < 8; m = morphstr(nullptr, VERB))
-    if (std::find(out.begin(), out.end(), std::string(m)) == out.end()) out.emplace_back(m);
-  return out;
-}
-
-}  // namespace
 
 std::vector<std::string> verbAncestors(const std::string& verb, int levels) {
   const std::string w = lower(verb);
