@@ -69,20 +69,18 @@ void rewritePhrasesAndStates(std::vector<std::string>& words) {
     // The verb: the word before the particle, or before the fillers before it ("throw this away").
     size_t v = i;
     while (v > 0 && fillers().count(words[v - 1]) && !verbCues().count(words[v - 1])) --v;
-    if (particles.count(w) && v > 0 && v == i && !fillers().count(words[v - 1]) && wordnet::knownAsVerb(words[v - 1]) &&
+    if (particles.count(w) && v > 0 && !fillers().count(words[v - 1]) && wordnet::knownAsVerb(words[v - 1]) &&
         !wordnet::phrasalVerb(words[v - 1], w).empty()) {
-      if (const auto act = wordnet::lookupNoun(words[v - 1] + w); act && act->lexfile == "noun.act")
+      const std::string closed = words[v - 1] + w;  // "workout": an act, when WordNet has it
+      if (const auto act = wordnet::lookupNoun(closed); v == i && act && act->lexfile == "noun.act")
         for (const auto& l : act->lemmas)
-          if (l != words[v - 1] + w && l.find(' ') == std::string::npos && wordnet::knownAsVerb(l)) {
+          if (l != closed && l.find(' ') == std::string::npos && wordnet::knownAsVerb(l)) {
             out.back() = "to";
             out.push_back(l);
             break;
           }
       continue;
     }
-    if (particles.count(w) && v > 0 && v < i && !fillers().count(words[v - 1]) && wordnet::knownAsVerb(words[v - 1]) &&
-        !wordnet::phrasalVerb(words[v - 1], w).empty())
-      continue;
     if (!fillers().count(w) && !(i > 0 && verbCues().count(words[i - 1])) && !wordnet::lookupNoun(w)) {
       std::string act;
       for (const auto& gloss : wordnet::adjectiveGlossesOf(w, 2)) {
@@ -301,7 +299,8 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   // or not); the object named only when there are none.
   bool act_verb = false;  // a verb naming an act ("cook", not "make")
   for (size_t i = 0; i < content.size(); ++i) act_verb = act_verb || (verb[i] && !generalVerb(content[i]));
-  bool act_on_other = !named.empty() && act_verb && !place_asked(words) && !namesCategory(P, named);
+  const bool named_category = !named.empty() && namesCategory(P, named);
+  bool act_on_other = !named.empty() && act_verb && !place_asked(words) && !named_category;
   std::vector<std::pair<double, std::string>> scored;
   std::set<std::string> act_named;
   bool known_scored = false;
@@ -366,7 +365,7 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   // tv; "clean the floor" for a vacuum cleaner and the floor.
   const auto named_sense = named.empty() ? std::nullopt : wordnet::lookupNoun(named);
   const bool keep_named = (act_on_other || place_asked(words)) && named_sense && named_sense->lexfile == "noun.artifact" &&
-                          !namesCategory(P, named);
+                          !named_category;
   for (const auto& [s, v] : scored) {
     if (s < scored.front().first || I.targets.size() >= (keep_named ? 2u : 3u)) break;
     I.targets.push_back(v);
