@@ -201,6 +201,11 @@ bool namesPlace(const std::string& label) {
   return sense && withDb([&](Db& db) { return db.isPlace(sense->offset); }, false);
 }
 
+bool furnishes(const std::string& label) {
+  const auto sense = lookupLabel(label);
+  return sense && withDb([&](Db& db) { return db.isFurnishing(sense->offset); }, false);
+}
+
 namespace {
 
 // The senses of the index word lookupNoun() read `word` from, and where its pick is among them:
@@ -297,6 +302,19 @@ std::vector<std::string> hypernymsOf(const std::string& label) {
           out.push_back(words.empty() ? std::string() : underscoresToSpaces(words.front()));
           cur = next;
         }
+        return out;
+      },
+      std::vector<std::string>{});
+}
+
+std::vector<std::string> kindGlossesOf(const std::string& label) {
+  return withDb(
+      [&](Db& db) {
+        std::vector<std::string> out;
+        const auto r = resolveLocked(db, label);
+        if (!r || !r->modifiers.empty()) return out;
+        const std::vector<long> kinds = db.synset(r->sense.offset).hyponyms;  // copy: synset() may grow the cache
+        for (long k : kinds) out.push_back(cleanGloss(db.synset(k).gloss));
         return out;
       },
       std::vector<std::string>{});

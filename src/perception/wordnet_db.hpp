@@ -31,6 +31,7 @@ struct SynsetData {
   std::string gloss;
   int fnum = 0;
   std::vector<long> hypernyms;
+  std::vector<long> hyponyms;  // direct ones, not instances
 };
 
 // All library access and every cache live behind one mutex (the C library uses globals).
@@ -97,6 +98,8 @@ class Db {
       for (int i = 0; i < s->ptrcount; ++i)
         if ((s->ptrtyp[i] == HYPERPTR || s->ptrtyp[i] == INSTANCE) && s->ppos[i] == NOUN)
           d.hypernyms.push_back(s->ptroff[i]);
+        else if (s->ptrtyp[i] == HYPOPTR && s->ppos[i] == NOUN)
+          d.hyponyms.push_back(s->ptroff[i]);
       free_synset(s);
     }
     return synsets_.emplace(off, std::move(d)).first->second;
@@ -174,7 +177,13 @@ class Db {
     return hasAncestor(off, room) || hasAncestor(off, building) || hasAncestor(off, complex);
   }
 
+  // Furniture, fixtures and home appliances: what a room is furnished with.
+  bool isFurnishing(long off) {
+    return hasAncestor(off, furniture) || hasAncestor(off, fixture) || hasAncestor(off, appliance);
+  }
+
   long artifact = -1, physical = -1, room = -1, building = -1, complex = -1;
+  long furniture = -1, fixture = -1, appliance = -1;
 
  private:
   void resolveAnchorsLocked() {
@@ -187,6 +196,9 @@ class Db {
     room = first("room");
     building = first("building");
     complex = first("building_complex");
+    furniture = first("furniture");
+    fixture = first("fixture");
+    appliance = first("home_appliance");
   }
 
   bool tried_ = false, open_ = false, initialised_ = false;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <map>
 #include <set>
 
 #include "request_match.hpp"
@@ -326,12 +327,17 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
       return std::find(vocab.begin(), vocab.begin() + long(known_vocab), x.second) == vocab.begin() + long(known_vocab);
     });
   // Best first; among equals one named for the act ("wash my clothes": a WASHING machine before
-  // a CLOTHES dryer, "a dryer that dries clothes wetted by washing"), then the shorter name
-  // ("shower" before "shower curtain").
+  // a CLOTHES dryer, "a dryer that dries clothes wetted by washing"), then what a room is
+  // furnished with ("where can I eat": a dining table before a fork; it stays where the act is
+  // done and is seen from across the room), then the shorter name ("shower" before "shower
+  // curtain").
   const auto words_in = [](const std::string& x) { return std::count(x.begin(), x.end(), ' '); };
+  std::map<std::string, bool> furnishing;
+  for (const auto& [s, v] : scored) furnishing.emplace(v, wordnet::furnishes(v));
   std::stable_sort(scored.begin(), scored.end(), [&](const auto& a, const auto& b) {
     if (a.first != b.first) return a.first > b.first;
     if (act_named.count(a.second) != act_named.count(b.second)) return act_named.count(a.second) > act_named.count(b.second);
+    if (furnishing.at(a.second) != furnishing.at(b.second)) return furnishing.at(a.second);
     return words_in(a.second) < words_in(b.second);
   });
   double best_room = 0.0;

@@ -472,13 +472,65 @@ TEST(Instruction, VerbsAdjectivesAndPhrasalVerbsAreReadThroughWordNet) {
   EXPECT_FALSE(wordnet::namesPlace("kettle"));
 }
 
-// Three lists of everyday requests judged by hand (tests/reasoning/data/): the first target must
+// Session 43: three readings of WordNet that each had a request wrong.
+TEST(Instruction, KindsOfAThingTiesAndTheSenseOfAnIngWord) {
+  const auto& P = *priors();
+  // What a kind of the thing is for, at 0.8: a sink may be a washbasin, "where you can wash your
+  // hands and face", a pot a teapot, "for brewing tea". Before, a hand towel (its name has the
+  // hand; it dries) and the tea itself.
+  const auto kinds = wordnet::kindGlossesOf("sink");
+  EXPECT_TRUE(std::any_of(kinds.begin(), kinds.end(), [](const std::string& g) { return g.find("wash your hands") != std::string::npos; }));
+  EXPECT_TRUE(wordnet::kindGlossesOf("office chair").empty());  // known by its head noun only
+  const Instruction W = interpretInstruction("wash my hands", P);
+  ASSERT_FALSE(W.targets.empty());
+  EXPECT_EQ(W.targets.front(), "sink");
+  EXPECT_TRUE(servesRequest(W, "sink"));
+  EXPECT_FALSE(servesRequest(W, "washing machine"));
+  const Instruction T = interpretInstruction("I want to brew some tea", P);
+  EXPECT_EQ(T.how, "functional");
+  EXPECT_EQ(T.targets, std::vector<std::string>{"pot"});
+  // Only what a kind is for as a verb counts: a conference table is "usually in a conference
+  // room for meetings", a horse cart "used for farm work"; the room is still what is sought.
+  EXPECT_EQ(interpretInstruction("I want to attend a meeting", P).room, "meeting room");
+  const Instruction O = interpretInstruction("somewhere to work", P);
+  EXPECT_EQ(O.how, "room_only");
+  EXPECT_EQ(O.room, "office");
+
+  // Among equal scores, what a room is furnished with first: "where can I eat" finds a dining
+  // table ("a table at which meals are served") before a fork ("used for serving and eating").
+  EXPECT_TRUE(wordnet::furnishes("dining table"));
+  EXPECT_TRUE(wordnet::furnishes("sink"));    // a plumbing fixture
+  EXPECT_TRUE(wordnet::furnishes("fridge"));  // a home appliance
+  EXPECT_FALSE(wordnet::furnishes("fork"));
+  EXPECT_FALSE(wordnet::furnishes("zorblax"));
+  const Instruction E = interpretInstruction("where can I eat", P);
+  EXPECT_DOUBLE_EQ(requestScore(E, "dining table"), requestScore(E, "fork"));
+  ASSERT_EQ(E.targets.size(), 2u);
+  EXPECT_EQ(E.targets.front(), "dining table");
+
+  // An -ing word of a name gives its verb's gloss as what the thing is for, but only the verbs
+  // in it: to shelve is first "to hold back to a later time", and a shelving unit is no place to
+  // check the time (it was the first target); to dine is to "eat dinner", and a dining table
+  // still answers "I want to eat dinner" first.
+  const Instruction C = interpretInstruction("I want to check the time", P);
+  ASSERT_FALSE(C.targets.empty());
+  EXPECT_EQ(C.targets.front(), "alarm clock");
+  EXPECT_LT(requestScore(C, "shelving unit"), requestScore(C, "alarm clock"));
+  const Instruction D = interpretInstruction("I want to eat dinner", P);
+  ASSERT_FALSE(D.targets.empty());
+  EXPECT_EQ(D.targets.front(), "dining table");
+  EXPECT_GT(requestScore(D, "dining table"), requestScore(D, "fork"));
+}
+
+// Four lists of everyday requests judged by hand (tests/reasoning/data/): the first target must
 // be one of the acceptable categories, or name one at the goal's text cosine (0.85: "couch" is
-// a sofa), or the room constraint the one given. The floors are session 42's counts (before it:
-// 20 of 44 and 12 of 38, the two answers the dev list gained included; the held-out
-// list read 16 of 38 at its first run, 18 after two rules written having seen its misses; a
-// third, fresh list, written after the last rule and run once: 11 -> 18 of 30); the misses are
-// printed, to be read and bettered, not to be tuned to.
+// a sofa), or the room constraint the one given. Session 42 (before it: 20 of 44 and 12 of 38,
+// the two answers the dev list gained included; the held-out list read 16 of 38 at its first
+// run, 18 after two rules written having seen its misses; a third, fresh list, written after
+// the last rule and run once: 11 -> 18 of 30). Session 43's three rules (kinds, ties, -ing
+// words): dev 33, held-out 21, fresh 18, and a fourth list written before them reads 14 of 31
+// with and without them. The floors are those counts; the misses are printed, to be read and
+// bettered, not to be tuned to.
 TEST(Instruction, JudgedRequestsReadAtLeastAsWellAsBefore) {
   const auto& P = *priors();
   const auto judge = [&](const std::string& file) {
@@ -514,13 +566,16 @@ TEST(Instruction, JudgedRequestsReadAtLeastAsWellAsBefore) {
   };
   const auto [dev, dev_total] = judge("requests_dev.tsv");
   EXPECT_EQ(dev_total, 44);
-  EXPECT_GE(dev, 30);
+  EXPECT_GE(dev, 33);
   const auto [held, held_total] = judge("requests_heldout.tsv");
   EXPECT_EQ(held_total, 38);
-  EXPECT_GE(held, 18);
+  EXPECT_GE(held, 21);
   const auto [fresh, fresh_total] = judge("requests_fresh.tsv");
   EXPECT_EQ(fresh_total, 30);
   EXPECT_GE(fresh, 18);
+  const auto [fresh2, fresh2_total] = judge("requests_fresh2.tsv");
+  EXPECT_EQ(fresh2_total, 31);
+  EXPECT_GE(fresh2, 14);
 }
 
 TEST(Instruction, UnknownWordsAreKeptLiterallyAndEmptyIsRejected) {

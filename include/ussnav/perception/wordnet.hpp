@@ -83,6 +83,9 @@ std::vector<std::string> nounForms(const std::string& word);
 // True when the sense lookupLabel() gives the label is a room, a building or a building complex
 // ("brewery", "kitchen"), not a thing in one.
 bool namesPlace(const std::string& label);
+// True when the label's sense is a piece of furniture, a fixture or a home appliance ("dining
+// table", "sink", "fridge"): what a room is furnished with, not a thing carried about ("fork").
+bool furnishes(const std::string& label);
 // Definitions of the word's first `senses` adjective senses, most frequent first (no
 // morphology): adjectiveGlossesOf("hungry", 2)[0] = "feeling hunger; feeling a need or desire
 // to eat food". Empty when WordNet has no such adjective.
@@ -120,6 +123,10 @@ std::string glossOf(const std::string& label);
 // First lemma of each hypernym on the shortest path to the root, nearest first:
 // hypernymsOf("armchair") = {"chair", "seat", "furniture", ..., "entity"}. Empty when unknown.
 std::vector<std::string> hypernymsOf(const std::string& label);
+// Definitions of the direct kinds of the label's sense (its hyponyms), in WordNet's order:
+// for "sink", a kitchen sink's and a washbasin's ("... where you can wash your hands and
+// face"). Empty when unknown, or when the label is known by its head noun only ("office chair").
+std::vector<std::string> kindGlossesOf(const std::string& label);
 // All words of the label's synset ("couch" -> {"sofa", "couch", "lounge"}). Empty when unknown.
 std::vector<std::string> synonymsOf(const std::string& label);
 // Wu-Palmer similarity of the two labels' senses, 2 d(lcs) / (d(a) + d(b)), in [0, 1];

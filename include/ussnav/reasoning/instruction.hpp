@@ -20,9 +20,12 @@
 //     furniture that provides a place to sleep": 2 for a name, 1.5 for a purpose "to / for W",
 //     1 for a mention or for the act in other words, wordnet::verbKin, or for a purpose whose
 //     verb hypernyms hold the act: to sleep is to rest and to lie; 0.9 of it where only the
-//     hypernym's gloss answers); nouns WordNet derives from the act are candidates too ("print"
-//     -> printer), looked for when no category answers by name or purpose; the best-scoring
-//     categories become the targets, the best-scoring room type a hint;
+//     hypernym's gloss answers, 0.8 where only a kind of it is for the act: a sink may be a
+//     washbasin, "where you can wash your hands"); nouns WordNet derives from the act are
+//     candidates too ("print" -> printer), looked for when no category answers by name or
+//     purpose; the best-scoring categories become the targets (among equals, one named for the
+//     act, then furniture, fixtures and appliances: a dining table before a fork), the
+//     best-scoring room type a hint;
 //  4. nothing recognised: the content words themselves are the target (an unknown label can
 //     still be matched by the text encoder).
 // Candidate categories: the priors' tables plus `extra_vocabulary` (e.g. labels in a scene graph).
