@@ -402,9 +402,9 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
 }
 
 namespace {
-RequestMatch matchInstruction(const Instruction& I, const std::string& label) {
+RequestMatch matchInstruction(const Instruction& I, const std::string& label, bool kinds = true) {
   const std::set<std::string> want(I.request.begin(), I.request.end()), verbs(I.request_verbs.begin(), I.request_verbs.end());
-  return request::matchRequest(want, verbs, label, "", true);
+  return request::matchRequest(want, verbs, label, "", true, kinds);
 }
 }  // namespace
 
@@ -434,7 +434,10 @@ bool servesRequest(const Instruction& I, const std::string& label) {
   // three glosses up does not make a pen serve "work out".
   const auto h = wordnet::hypernymsOf(label);
   if (h.empty() || I.score < 0.9 * 1.5 - 1e-9) return false;  // 0.9: a purpose its hypernym names
-  const RequestMatch up = matchInstruction(I, h.front());
+  // The hypernym's own gloss, not its kinds: those are the label's siblings (a microwave is a
+  // kitchen appliance, and a kitchen appliance may be a refrigerator; a microwave keeps no food
+  // cold).
+  const RequestMatch up = matchInstruction(I, h.front(), false);
   return up.purpose && (!I.object_named || up.object) && up.score >= I.score - 1e-9;
 }
 

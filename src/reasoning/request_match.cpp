@@ -177,11 +177,12 @@ RequestMatch matchRequestIn(const std::set<std::string>& want, const std::set<st
 // horse cart "used for farm work" (to farm is to work), but neither table nor cart answers "I
 // want to attend a meeting" or "somewhere to work".
 RequestMatch matchRequest(const std::set<std::string>& want, const std::set<std::string>& verbs,
-                          const std::string& name, const std::string& extra_text, bool object) {
+                          const std::string& name, const std::string& extra_text, bool object, bool kinds) {
   RequestMatch full = matchRequestIn(want, verbs, name, extra_text, "", object, object);
   if (!object) return full;
   const double own = matchRequestIn(want, verbs, name, extra_text, "", object, false).score;
   full.score = own + 0.9 * (full.score - own);
+  if (!kinds) return full;
   for (const auto& gloss : wordnet::kindGlossesOf(name)) {
     RequestMatch kind = matchRequestIn(want, verbs, name, extra_text, gloss, object, false);
     kind.score *= 0.8;

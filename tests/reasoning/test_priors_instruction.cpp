@@ -489,6 +489,16 @@ TEST(Instruction, KindsOfAThingTiesAndTheSenseOfAnIngWord) {
   const Instruction T = interpretInstruction("I want to brew some tea", P);
   EXPECT_EQ(T.how, "functional");
   EXPECT_EQ(T.targets, std::vector<std::string>{"pot"});
+  // A label inherits what its hypernym's own gloss is for, not what the hypernym's kinds are for:
+  // those are its siblings. A microwave is a kitchen appliance, which may be a refrigerator, and
+  // keeps no food cold; a spoon is cutlery and a box a container, and neither stores food (all
+  // three served before the hypernym's kinds were left out).
+  const Instruction K = interpretInstruction("I need to keep food cold", P);
+  EXPECT_TRUE(servesRequest(K, "fridge"));
+  EXPECT_FALSE(servesRequest(K, "microwave"));
+  const Instruction S = interpretInstruction("where can I store food", P);
+  EXPECT_TRUE(servesRequest(S, "fridge"));
+  for (const char* label : {"spoon", "box", "cup", "garbage bag"}) EXPECT_FALSE(servesRequest(S, label)) << label;
   // Only what a kind is for as a verb counts: a conference table is "usually in a conference
   // room for meetings", a horse cart "used for farm work"; the room is still what is sought.
   EXPECT_EQ(interpretInstruction("I want to attend a meeting", P).room, "meeting room");
