@@ -421,7 +421,10 @@ bool servesRequest(const Instruction& I, const std::string& label) {
   if (const auto r = wordnet::resolveLabel(label); r && !r->modifiers.empty() &&
                                                    std::none_of(r->modifiers.begin(), r->modifiers.end(), wordnet::namesAnimal))
     need *= 0.9;
-  const RequestMatch m = matchInstruction(I, label);
+  // Judged by what the label itself is, not by what a kind of it may be: a can may be a canister,
+  // "for storing dry foods", but a can seen is no place to store food (the targets were ranked
+  // with the kinds; a target seen matches by name).
+  const RequestMatch m = matchInstruction(I, label, false);
   if (I.object_named && !m.object) return false;
   if (I.act_required && !m.verb) return false;  // a floor lamp cleans no floor
   if (m.score >= need - 1e-9) return true;

@@ -37,8 +37,9 @@ struct RequestMatch {
 // the hypernym's gloss answers at 0.9. Since session 43: what only a direct kind of it is for (a
 // verb of the request in the kind's gloss, as a verb) at 0.8 (a sink may be a washbasin), and
 // an -ing word's verb gloss answers the request's verbs as purposes, its other words as mentions.
-// `kinds` false: without the kinds (a microwave's hypernym, a kitchen appliance, may be a
-// refrigerator, but that says nothing of the microwave).
+// `kinds` false: without the kinds, for judging a label seen (a can may be a canister, "for
+// storing dry foods", but a can seen is not known to be one; a microwave's hypernym, a kitchen
+// appliance, may be a refrigerator, which says nothing of the microwave).
 RequestMatch matchRequest(const std::set<std::string>& want, const std::set<std::string>& verbs,
                           const std::string& name, const std::string& extra_text, bool object, bool kinds = true);
 
