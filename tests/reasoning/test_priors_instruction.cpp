@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <tuple>
 
 #include "ussnav/core/error.hpp"
 #include "ussnav/perception/wordnet.hpp"
@@ -579,18 +580,16 @@ TEST(Instruction, JudgedRequestsReadAtLeastAsWellAsBefore) {
     std::cout << file << ": " << right << " of " << total << " read right\n";
     return std::pair{right, total};
   };
-  const auto [dev, dev_total] = judge("requests_dev.tsv");
-  EXPECT_EQ(dev_total, 44);
-  EXPECT_GE(dev, 33);
-  const auto [held, held_total] = judge("requests_heldout.tsv");
-  EXPECT_EQ(held_total, 38);
-  EXPECT_GE(held, 21);
-  const auto [fresh, fresh_total] = judge("requests_fresh.tsv");
-  EXPECT_EQ(fresh_total, 30);
-  EXPECT_GE(fresh, 18);
-  const auto [fresh2, fresh2_total] = judge("requests_fresh2.tsv");
-  EXPECT_EQ(fresh2_total, 31);
-  EXPECT_GE(fresh2, 14);
+  // file, requests in it, floor
+  const std::tuple<const char*, int, int> lists[] = {{"requests_dev.tsv", 44, 33},
+                                                     {"requests_heldout.tsv", 38, 21},
+                                                     {"requests_fresh.tsv", 30, 18},
+                                                     {"requests_fresh2.tsv", 31, 14}};
+  for (const auto& [file, count, floor] : lists) {
+    const auto [right, total] = judge(file);
+    EXPECT_EQ(total, count) << file;
+    EXPECT_GE(right, floor) << file;
+  }
 }
 
 TEST(Instruction, UnknownWordsAreKeptLiterallyAndEmptyIsRejected) {
