@@ -56,7 +56,8 @@ bool namesCategory(const CommonsensePriors& P, const std::string& phrase) {
 }
 
 // Rewrites what the later steps could not read, in place:
-//  - a particle after a verb WordNet knows with it ("lie down", "heat up", "throw away") goes and
+//  - a particle after a verb WordNet knows with it ("lie down", "heat up", "throw away", and after
+//    a light verb: "take out the trash") goes and
 //    the verb stays; when verb and particle closed up are a WordNet act ("work out" -> workout,
 //    "exercise"), the act's first other one-word name, as a verb, stands for both;
 //  - a word WordNet knows only as an adjective, whose definition says what it makes one want to
@@ -69,8 +70,12 @@ void rewritePhrasesAndStates(std::vector<std::string>& words) {
     const std::string& w = words[i];
     // The verb: the word before the particle, or before the fillers before it ("throw this away").
     size_t v = i;
-    while (v > 0 && fillers().count(words[v - 1]) && !verbCues().count(words[v - 1])) --v;
-    if (particles.count(w) && v > 0 && !fillers().count(words[v - 1]) && wordnet::knownAsVerb(words[v - 1]) &&
+    while (v > 0 && fillers().count(words[v - 1]) && !verbCues().count(words[v - 1]) &&
+           !lightVerbs().count(words[v - 1]))
+      --v;
+    // A light verb counts as the verb here ("take out the trash"): "out" is no act of its own.
+    const bool verb_before = v > 0 && (!fillers().count(words[v - 1]) || lightVerbs().count(words[v - 1]));
+    if (particles.count(w) && verb_before && wordnet::knownAsVerb(words[v - 1]) &&
         !wordnet::phrasalVerb(words[v - 1], w).empty()) {
       const std::string closed = words[v - 1] + w;  // "workout": an act, when WordNet has it
       if (const auto act = wordnet::lookupNoun(closed); v == i && act && act->lexfile == "noun.act")

@@ -418,6 +418,9 @@ TEST(Instruction, VerbsAdjectivesAndPhrasalVerbsAreReadThroughWordNet) {
   EXPECT_TRUE(thirsty == "cup" || thirsty == "mug") << thirsty;
   // A phrasal verb closed up into an act: "work out" -> workout, exercise; a dumbbell is "an
   // exercising weight". Was: a shower curtain.
+  // A particle after a light verb goes too: "take out the trash" is about the trash, not "an
+  // out" ("a failure by a batter ... to reach a base safely"). Was: a plate, a baseball bat.
+  EXPECT_EQ(first("I need to take out the trash"), "garbage can");
   const Instruction gym = interpretInstruction("I want to work out", P);
   EXPECT_EQ(gym.targets.front(), "dumbbell");
   EXPECT_EQ(gym.room_hint, "gym");
@@ -584,7 +587,7 @@ TEST(Instruction, JudgedRequestsReadAtLeastAsWellAsBefore) {
   const std::tuple<const char*, int, int> lists[] = {{"requests_dev.tsv", 44, 33},
                                                      {"requests_heldout.tsv", 38, 21},
                                                      {"requests_fresh.tsv", 30, 18},
-                                                     {"requests_fresh2.tsv", 31, 14}};
+                                                     {"requests_fresh2.tsv", 31, 15}};
   for (const auto& [file, count, floor] : lists) {
     const auto [right, total] = judge(file);
     EXPECT_EQ(total, count) << file;
