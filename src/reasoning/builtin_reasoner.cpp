@@ -2,6 +2,7 @@
 
 #include "ussnav/reasoning/builtin_reasoner.hpp"
 
+#include "english.hpp"
 #include "ussnav/core/timing.hpp"
 
 #include <algorithm>
@@ -35,10 +36,6 @@ double expectedAffinity(const std::vector<double>& P, const std::vector<double>&
   double s = 0.0;
   for (size_t k = 0; k < P.size(); ++k) s += P[k] * A[k];
   return s;
-}
-
-std::string article(const std::string& w) {
-  return (!w.empty() && std::string("aeiou").find(w[0]) != std::string::npos ? "an " : "a ") + w;
 }
 
 }  // namespace
@@ -94,12 +91,12 @@ RegionSemantics BuiltinReasoner::labelRegion(const RegionSummary& region) {
   const Vec3 ext = region.box_max - region.box_min;
   d.setf(std::ios::fixed);
   d.precision(1);
-  d << (s.label.empty() ? std::string("An unidentified area") : "A " + s.label) << " (about " << ext.x() + 1.0 << " x "
+  d << english::capitalised(s.label.empty() ? std::string("an unidentified area") : english::withArticle(s.label)) << " (about " << ext.x() + 1.0 << " x "
     << ext.y() + 1.0 << " m)";
   if (top.empty()) d << " with no objects seen yet";
   for (size_t i = 0; i < top.size() && i < 3; ++i)
     d << (i == 0 ? " with " : i + 1 == std::min<size_t>(top.size(), 3) && top.size() <= 3 ? " and " : ", ")
-      << (top[i].first > 1 ? std::to_string(top[i].first) + " " + top[i].second + "s" : article(top[i].second));
+      << (top[i].first > 1 ? english::counted(top[i].first, top[i].second) : english::withArticle(top[i].second));
   if (top.size() > 3) d << " and " << top.size() - 3 << " more kinds of object";
   d << ".";
   s.description = d.str();

@@ -3,7 +3,6 @@
 #include "ussnav/reasoning/scene_queries.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -11,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "english.hpp"
 #include "ussnav/reasoning/builtin_reasoner.hpp"
 
 namespace ussnav {
@@ -39,11 +39,6 @@ int nearestNode(const SceneGraph& g, const Vec3& p, const std::set<int>* among =
     if (best < 0 || d < bd) best = int(i), bd = d;
   }
   return best;
-}
-
-std::string capitalised(std::string s) {
-  if (!s.empty()) s[0] = char(std::toupper(static_cast<unsigned char>(s[0])));
-  return s;
 }
 
 }  // namespace
@@ -166,7 +161,7 @@ std::string answerQuestion(const SceneGraph& g, const std::string& question, con
   std::ostringstream out;
   auto describe = [&](const RegionSummary& s, const std::string& lead) {
     const auto it = sem.find(s.id);
-    out << lead << (lead.empty() ? capitalised(regionName(s.id, sem)) : regionName(s.id, sem)) << ". ";
+    out << lead << (lead.empty() ? english::capitalised(regionName(s.id, sem)) : regionName(s.id, sem)) << ". ";
     if (it != sem.end() && !it->second.description.empty()) out << it->second.description << " ";
     if (!s.objects.empty()) {
       out << "Objects here: ";
@@ -204,7 +199,7 @@ std::string answerQuestion(const SceneGraph& g, const std::string& question, con
         << summaries.size() << (summaries.size() == 1 ? " region" : " regions") << (by.empty() ? "." : ": ");
     for (size_t i = 0; i < by.size(); ++i) {
       const std::string& l = by[i].second;
-      out << (i ? ", " : "") << by[i].first << " " << l << (by[i].first > 1 && !l.empty() && l.back() != 's' ? "s" : "");
+      out << (i ? ", " : "") << english::counted(by[i].first, l);
     }
     if (!by.empty()) out << ".";
     return out.str();
@@ -218,7 +213,7 @@ std::string answerQuestion(const SceneGraph& g, const std::string& question, con
         for (const ObjectBrief& o : *list)
           for (const auto& t : ins->targets)
             if (priors.encoder().similarity(o.label, t) >= 0.85) {
-              out << (n++ ? " " : "") << "A " << o.label << " (object " << o.id << ") is at " << fmt(o.position)
+              out << (n++ ? " " : "") << english::capitalised(english::withArticle(o.label)) << " (object " << o.id << ") is at " << fmt(o.position)
                   << (list == &s.objects ? " in " : ", seen from ") << regionName(s.id, sem) << ".";
               break;
             }
@@ -241,7 +236,7 @@ std::string answerQuestion(const SceneGraph& g, const std::string& question, con
   if (about_layout || !at) {
     out << "The map has " << summaries.size() << " regions and " << g.objects.size() << " objects.";
     for (const RegionSummary& s : summaries) {
-      out << " " << capitalised(regionName(s.id, sem)) << ": " << s.objects.size() << (s.objects.size() == 1 ? " object" : " objects");
+      out << " " << english::capitalised(regionName(s.id, sem)) << ": " << s.objects.size() << (s.objects.size() == 1 ? " object" : " objects");
       if (!s.adjacent.empty()) {
         out << ", next to ";
         for (size_t i = 0; i < s.adjacent.size(); ++i) out << (i ? ", " : "") << regionName(s.adjacent[i], sem);
