@@ -3,6 +3,7 @@
 #include "english.hpp"
 
 #include <cctype>
+#include <map>
 
 namespace ussnav::english {
 
@@ -22,6 +23,13 @@ std::string withArticle(const std::string& noun) {
 
 std::string plural(const std::string& noun) {
   if (noun.empty()) return noun;
+  static const std::map<std::string, std::string> irregular{
+      {"person", "people"}, {"child", "children"}, {"man", "men"},   {"woman", "women"},
+      {"foot", "feet"},     {"tooth", "teeth"},    {"mouse", "mice"}, {"fish", "fish"}};
+  const size_t space = noun.rfind(' ');
+  const std::string head = space == std::string::npos ? noun : noun.substr(space + 1);
+  if (const auto it = irregular.find(head); it != irregular.end())
+    return noun.substr(0, noun.size() - head.size()) + it->second;
   const std::string stem = noun.substr(0, noun.size() - 1);
   if (endsWith(noun, "s") || endsWith(noun, "x") || endsWith(noun, "z") || endsWith(noun, "ch") ||
       endsWith(noun, "sh"))

@@ -7,11 +7,11 @@
 
 namespace ussnav::english {
 
-// "a chair", "an office chair", "an hour-glass" is not handled: the first letter decides.
+// "a chair", "an office chair": the first letter decides ("an hour", "a unit" are not handled).
 std::string withArticle(const std::string& noun);
 
 // The plural of a noun phrase's head: chair -> chairs, glass -> glasses, shelf -> shelves,
-// knife -> knives, laundry -> laundries, toy -> toys; "" stays "".
+// knife -> knives, laundry -> laundries, toy -> toys, person -> people; "" stays "".
 std::string plural(const std::string& noun);
 
 // "Living room" for "living room".

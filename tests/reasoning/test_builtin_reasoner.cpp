@@ -77,9 +77,10 @@ TEST(BuiltinReasoner, LabelsRegionsFromTheirObjects) {
   EXPECT_NE(three.description.find("a bed"), std::string::npos) << three.description;
   EXPECT_NE(three.description.find("an alarm clock"), std::string::npos) << three.description;
   // Counts in English: "2 shelves", "2 boxes", not "2 shelfs", "2 boxs"; "an office".
-  const RegionSemantics store = R.labelRegion(region(13, {"shelf", "shelf", "box", "box"}));
+  const RegionSemantics store = R.labelRegion(region(13, {"shelf", "shelf", "box", "box", "person", "person"}));
   EXPECT_NE(store.description.find("2 shelves"), std::string::npos) << store.description;
   EXPECT_NE(store.description.find("2 boxes"), std::string::npos) << store.description;
+  EXPECT_NE(store.description.find("2 people"), std::string::npos) << store.description;
   const RegionSemantics office = R.labelRegion(region(14, {"monitor", "monitor", "desk", "office chair"}));
   EXPECT_EQ(office.label, "office");
   EXPECT_EQ(office.description.rfind("An office (", 0), 0u) << office.description;
