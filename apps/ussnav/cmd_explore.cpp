@@ -75,6 +75,11 @@ void runExplore(const ExploreArgs& a) {
   std::printf("  scene graph: %zu nodes, %zu regions, %zu objects; camera saw %.0f of %.0f m^2 known\n",
               run.graph.nodes.size(), run.graph.regions.size(), run.graph.objects.size(),
               r.coverage.empty() ? 0.0 : r.coverage.back().camera_seen_m2, r.coverage.empty() ? 0.0 : r.coverage.back().known_m2);
+  if (r.region_count > 0) {
+    std::printf("  regions (against ground truth): the largest holds %.0f %% of the nodes", 100.0 * r.region_largest_share);
+    if (r.region_ari > -1.0) std::printf("; ARI %.3f against the world's rooms", r.region_ari);
+    std::printf("\n");
+  }
   if (r.labels_scored > 0)
     std::printf("  region labels (against ground truth): %d of %d correct\n", r.labels_correct, r.labels_scored);
   std::printf("  per-frame update: median %.2f ms (%.0f Hz), wall %.1f s\n", 1000.0 / std::max(r.update_hz, 1e-9),

@@ -50,6 +50,7 @@ nlohmann::json toJson(const EpisodeResult& r) {
   else
     j["sighting"] = nullptr;
   j["region_labels"] = r.region_labels.is_null() ? nlohmann::json::object() : r.region_labels;
+  j["regions"] = r.regions.is_null() ? nlohmann::json::object() : r.regions;
   nlohmann::json cov = nlohmann::json::array();
   for (const CoverageSample& c : r.coverage) cov.push_back({{"t", c.t}, {"known_m2", c.known_m2}, {"camera_seen_m2", c.camera_seen_m2}});
   j["coverage"] = cov;

@@ -257,6 +257,17 @@ void FlightLoop::finish() {
                         {"correct", lq.correct}, {"accuracy", lq.accuracy}, {"confusions", lq.confusions}};
   }
   R_.reasoner_fallbacks = decider_ ? decider_->stats().fallbacks : 0;
+  {
+    const RegionQuality rq = regionQuality(run_.graph, sim_.world());
+    size_t largest = 0, nodes = 0;
+    for (const SgRegion& r : run_.graph.regions) largest = std::max(largest, r.nodes.size()), nodes += r.nodes.size();
+    R_.region_count = rq.count;
+    R_.region_largest_share = nodes ? double(largest) / double(nodes) : 0.0;
+    R_.region_ari = rq.nodes_scored > 1 ? rq.ari : -1.0;
+    R_.regions = {{"count", rq.count}, {"largest_share", R_.region_largest_share}, {"nodes_in_rooms", rq.nodes_scored},
+                  {"rooms_touched", rq.rooms_touched}};
+    if (R_.region_ari > -1.0) R_.regions["purity"] = rq.purity, R_.regions["ari"] = rq.ari;
+  }
   run_.topdown = drawEpisode(sim_.world(), run_, camera_, truth_.instances, start_);
   run_.overlay = worldOverlay(sim_.world(), truth_.instances);
   R_.wall_s = wall_.ms() / 1000.0;

@@ -31,7 +31,8 @@ std::vector<std::string> split(const std::string& line) {
   return out;
 }
 
-constexpr int kColumns = 21;
+constexpr int kColumns = 24;
+constexpr int kColumnsSighting = 21;  // episodes.csv before the region columns
 constexpr int kColumnsLabels = 18;  // episodes.csv before the sighting columns
 constexpr int kColumnsBefore = 16;  // episodes.csv before the region-label columns
 const char* const kHeaderBefore =
@@ -40,6 +41,9 @@ const char* const kHeaderBefore =
 const char* const kHeaderLabels =
     "world,goal,planner,seed,split,success,spl,path_length_m,shortest_path_m,time_s,frames,collisions,end_reason,"
     "found_label,update_hz,wall_s,labels_scored,labels_correct";
+const char* const kHeaderSighting =
+    "world,goal,planner,seed,split,success,spl,path_length_m,shortest_path_m,time_s,frames,collisions,end_reason,"
+    "found_label,update_hz,wall_s,labels_scored,labels_correct,search_m,approach_shortest_m,view_shortest_m";
 
 }  // namespace
 
@@ -55,23 +59,25 @@ EpisodeRow rowOf(const EpisodeResult& r) {
   w.update_hz = r.update_hz, w.wall_s = r.wall_s;
   w.labels_scored = r.labels_scored, w.labels_correct = r.labels_correct;
   w.search_m = r.search_m, w.approach_shortest_m = r.approach_shortest_m, w.view_shortest_m = r.view_shortest_m;
+  w.region_count = r.region_count, w.region_largest_share = r.region_largest_share, w.region_ari = r.region_ari;
   return w;
 }
 
 std::string csvHeader() {
   return "world,goal,planner,seed,split,success,spl,path_length_m,shortest_path_m,time_s,frames,collisions,end_reason,"
          "found_label,update_hz,wall_s,labels_scored,labels_correct,search_m,approach_shortest_m,"
-         "view_shortest_m";
+         "view_shortest_m,region_count,region_largest_share,region_ari";
 }
 
 std::string toCsv(const EpisodeRow& r) {
-  char buf[512];
-  std::snprintf(buf, sizeof buf, "%s,%s,%s,%llu,%s,%d,%.4f,%.3f,%.3f,%.2f,%d,%d,%s,%s,%.1f,%.2f,%d,%d,%.3f,%.3f,%.3f",
+  char buf[640];
+  std::snprintf(buf, sizeof buf,
+                "%s,%s,%s,%llu,%s,%d,%.4f,%.3f,%.3f,%.2f,%d,%d,%s,%s,%.1f,%.2f,%d,%d,%.3f,%.3f,%.3f,%d,%.4f,%.4f",
                 clean(r.world).c_str(), clean(r.goal).c_str(), clean(r.planner).c_str(),
                 static_cast<unsigned long long>(r.seed), r.split.c_str(), int(r.success), r.spl, r.path_length_m,
                 r.shortest_path_m, r.time_s, r.frames, r.collisions, clean(r.end_reason).c_str(),
                 clean(r.found_label).c_str(), r.update_hz, r.wall_s, r.labels_scored, r.labels_correct, r.search_m,
-                r.approach_shortest_m, r.view_shortest_m);
+                r.approach_shortest_m, r.view_shortest_m, r.region_count, r.region_largest_share, r.region_ari);
   return buf;
 }
 
@@ -85,11 +91,12 @@ std::vector<EpisodeRow> readEpisodesCsv(const std::filesystem::path& path, int* 
   while (std::getline(in, line)) {
     if (header) {
       header = false;
-      if (line == csvHeader() || line == kHeaderBefore || line == kHeaderLabels) continue;
+      if (line == csvHeader() || line == kHeaderBefore || line == kHeaderLabels || line == kHeaderSighting) continue;
     }
     const auto f = split(line);
     try {
-      if (int(f.size()) != kColumns && int(f.size()) != kColumnsLabels && int(f.size()) != kColumnsBefore)
+      if (int(f.size()) != kColumns && int(f.size()) != kColumnsSighting && int(f.size()) != kColumnsLabels &&
+          int(f.size()) != kColumnsBefore)
         throw std::invalid_argument("columns");
       EpisodeRow r;
       r.world = f[0], r.goal = f[1], r.planner = f[2], r.seed = std::stoull(f[3]), r.split = f[4];
@@ -99,8 +106,10 @@ std::vector<EpisodeRow> readEpisodesCsv(const std::filesystem::path& path, int* 
       r.collisions = std::stoi(f[11]), r.end_reason = f[12], r.found_label = f[13], r.update_hz = std::stod(f[14]);
       r.wall_s = std::stod(f[15]);
       if (int(f.size()) >= kColumnsLabels) r.labels_scored = std::stoi(f[16]), r.labels_correct = std::stoi(f[17]);
-      if (int(f.size()) >= kColumns)
+      if (int(f.size()) >= kColumnsSighting)
         r.search_m = std::stod(f[18]), r.approach_shortest_m = std::stod(f[19]), r.view_shortest_m = std::stod(f[20]);
+      if (int(f.size()) >= kColumns)
+        r.region_count = std::stoi(f[21]), r.region_largest_share = std::stod(f[22]), r.region_ari = std::stod(f[23]);
       rows.push_back(r);
     } catch (const std::exception&) {
       if (bad) ++*bad;
@@ -220,6 +229,20 @@ nlohmann::json summaryJson(const std::vector<EpisodeRow>& rows) {
     labels[r.planner].first += r.labels_scored;
     labels[r.planner].second += r.labels_correct;
   }
+  // The final regions: mean count and largest share over every episode with regions, mean ARI
+  // over those whose world has rooms (region_ari >= -1 + 1e-9; -1 marks none).
+  std::map<std::string, std::array<double, 5>> reg;  // planner -> episodes, count, share, ari n, ari sum
+  for (const EpisodeRow& r : rows) {
+    if (r.region_count <= 0) continue;
+    auto& a = reg[r.planner];
+    a[0] += 1, a[1] += r.region_count, a[2] += r.region_largest_share;
+    if (r.region_ari > -1.0 + 1e-9) a[3] += 1, a[4] += r.region_ari;
+  }
+  for (const auto& [planner, a] : reg) {
+    j[planner]["regions"] = {{"episodes", int(a[0])}, {"mean_count", a[1] / a[0]}, {"mean_largest_share", a[2] / a[0]},
+                             {"ari_episodes", int(a[3])}};
+    if (a[3] > 0) j[planner]["regions"]["mean_ari"] = a[4] / a[3];
+  }
   for (const auto& [planner, sc] : labels)
     if (sc.first > 0)
       j[planner]["region_labels"] = {
@@ -254,6 +277,23 @@ std::string summaryMarkdown(const std::vector<EpisodeRow>& rows, const std::stri
       char line[160];
       std::snprintf(line, sizeof line, "| %s | %d | %d | %.3f |\n", it.key().c_str(), l["scored"].get<int>(),
                     l["correct"].get<int>(), l["accuracy"].get<double>());
+      md << line;
+    }
+    md << "\n";
+  }
+  bool any_regions = false;
+  for (auto it = j.begin(); it != j.end(); ++it) any_regions = any_regions || it.value().contains("regions");
+  if (any_regions) {
+    md << "## regions against the rooms\n\n| planner | episodes | regions | largest holds | episodes in rooms | ARI |\n"
+          "|---|---:|---:|---:|---:|---:|\n";
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      if (!it.value().contains("regions")) continue;
+      const auto& g = it.value()["regions"];
+      char ari[32] = "-", line[200];
+      if (g.contains("mean_ari")) std::snprintf(ari, sizeof ari, "%.3f", g["mean_ari"].get<double>());
+      std::snprintf(line, sizeof line, "| %s | %d | %.1f | %.0f %% | %d | %s |\n", it.key().c_str(),
+                    g["episodes"].get<int>(), g["mean_count"].get<double>(),
+                    100.0 * g["mean_largest_share"].get<double>(), g["ari_episodes"].get<int>(), ari);
       md << line;
     }
     md << "\n";

@@ -219,6 +219,44 @@ TEST(EvalReport, PathSplitAtTheSightingMatchesHandComputation) {
   EXPECT_LT(old[0].search_m, 0.0);
 }
 
+TEST(EvalReport, RegionColumnsRoundTripAndAreSummarised) {
+  EpisodeRow a = row("full", "multi_room", true, 0.4, 12.5);
+  a.region_count = 6, a.region_largest_share = 0.5, a.region_ari = 0.8;
+  EpisodeRow b = row("full", "single_room", true, 0.2, 9.0);
+  b.region_count = 2, b.region_largest_share = 0.9, b.region_ari = -1.0;  // a world without rooms
+  EpisodeRow c = row("full", "multi_room", true, 0.3, 10.0);
+  c.region_count = 4, c.region_largest_share = 0.4, c.region_ari = 0.4;
+  int bad = 0;
+  const auto back = readEpisodesCsv(writeText("regions.csv", csvHeader() + "\n" + toCsv(a) + "\n" + toCsv(b) + "\n"), &bad);
+  ASSERT_EQ(back.size(), 2u);
+  EXPECT_EQ(bad, 0);
+  EXPECT_EQ(back[0].region_count, 6);
+  EXPECT_NEAR(back[0].region_largest_share, 0.5, 1e-4);
+  EXPECT_NEAR(back[0].region_ari, 0.8, 1e-4);
+  EXPECT_NEAR(back[1].region_ari, -1.0, 1e-9);
+  // Means by hand: count (6 + 2 + 4) / 3 = 4, share (0.5 + 0.9 + 0.4) / 3 = 0.6, ARI over the two
+  // episodes in a world with rooms (0.8 + 0.4) / 2 = 0.6.
+  const auto j = summaryJson({a, b, c, row("frontier", "multi_room", true, 0.3, 10)});
+  const auto& g = j["full"]["regions"];
+  EXPECT_EQ(g["episodes"].get<int>(), 3);
+  EXPECT_NEAR(g["mean_count"].get<double>(), 4.0, 1e-12);
+  EXPECT_NEAR(g["mean_largest_share"].get<double>(), 0.6, 1e-12);
+  EXPECT_EQ(g["ari_episodes"].get<int>(), 2);
+  EXPECT_NEAR(g["mean_ari"].get<double>(), 0.6, 1e-12);
+  EXPECT_FALSE(j["frontier"].contains("regions"));  // no region columns: nothing to average
+  const std::string md = summaryMarkdown({a, b, c}, "t");
+  EXPECT_NE(md.find("| full | 3 | 4.0 | 60 % | 2 | 0.600 |"), std::string::npos) << md;
+  // A file from before these columns (21 of them) loads, with no regions.
+  const std::string sighting_header = csvHeader().substr(0, csvHeader().find(",region_count"));
+  std::string old_row = toCsv(a);
+  for (int i = 0; i < 3; ++i) old_row.erase(old_row.rfind(','));
+  const auto old = readEpisodesCsv(writeText("sighting.csv", sighting_header + "\n" + old_row + "\n"), &bad);
+  ASSERT_EQ(old.size(), 1u);
+  EXPECT_EQ(bad, 0);
+  EXPECT_EQ(old[0].region_count, 0);
+  EXPECT_NEAR(old[0].region_ari, -1.0, 1e-9);
+}
+
 TEST(Suite, ShippedSuitesLoadAndTheLargeOneIsMultiRoom) {
   const auto dir = std::filesystem::path(USSNAV_SOURCE_DIR) / "configs/suites";
   int files = 0;

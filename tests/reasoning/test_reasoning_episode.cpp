@@ -62,6 +62,15 @@ TEST(ReasoningEpisode, FreeTextInstructionFindsTheBed) {
   EXPECT_GE(r.labels_correct, 1);
   EXPECT_EQ(r.region_labels["correct"].get<int>(), r.labels_correct);
   EXPECT_EQ(r.region_labels["scored"].get<int>(), r.labels_scored);
+  // ... and the regions themselves against the rooms (result.json regions).
+  EXPECT_EQ(r.region_count, int(run.graph.regions.size()));
+  EXPECT_EQ(r.regions["count"].get<int>(), r.region_count);
+  EXPECT_GT(r.region_largest_share, 0.0);
+  EXPECT_LE(r.region_largest_share, 1.0);
+  // Two rooms joined by one door: two regions, split at the door.
+  EXPECT_EQ(r.region_count, 2);
+  EXPECT_GT(r.region_ari, 0.9);
+  EXPECT_NEAR(r.regions["ari"].get<double>(), r.region_ari, 1e-12);
 }
 
 TEST(ReasoningEpisode, MisleadingGroundTruthRoomLabelsChangeNothing) {

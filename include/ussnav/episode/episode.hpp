@@ -90,6 +90,12 @@ struct EpisodeResult {
   // (regionLabelQuality); empty without a reasoner or a world with room types.
   nlohmann::json region_labels;
   int labels_scored = 0, labels_correct = 0;
+  // The final regions against the world's rooms (regionQuality): how many, the share of the
+  // graph's nodes the largest holds (1: one region for everything), purity and ARI over the nodes
+  // that lie in a room; ARI -1 where none does (a world without rooms). Evaluation only.
+  nlohmann::json regions;
+  int region_count = 0;
+  double region_largest_share = 0.0, region_ari = -1.0;
   double wall_s = 0.0;
 };
 

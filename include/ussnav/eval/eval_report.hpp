@@ -29,6 +29,9 @@ struct EpisodeRow {
   int labels_scored = 0, labels_correct = 0;  // region labels against ground truth (EpisodeResult)
   // The path split at the goal's first sighting, and L* to a view of the goal (EpisodeResult).
   double search_m = -1, approach_shortest_m = -1, view_shortest_m = -1;
+  // The final regions against the world's rooms (EpisodeResult); 0 / 0 / -1 in older files.
+  int region_count = 0;
+  double region_largest_share = 0, region_ari = -1;
   std::string key() const;  // world|goal|planner|seed
 };
 
@@ -45,7 +48,9 @@ std::string toCsv(const EpisodeRow& r);
 std::vector<EpisodeRow> readEpisodesCsv(const std::filesystem::path& path, int* bad = nullptr);
 
 // {planner: {split: {episodes, sr, spl, ...}, region_labels: {scored, correct, accuracy}}};
-// region_labels only for planners that label regions (labels_scored > 0 somewhere).
+// region_labels only for planners that label regions (labels_scored > 0 somewhere); regions:
+// {episodes, mean_count, mean_largest_share, ari_episodes, mean_ari (when ari_episodes > 0)}
+// over the episodes with regions (files written before these columns have none).
 nlohmann::json summaryJson(const std::vector<EpisodeRow>& rows);
 std::string summaryMarkdown(const std::vector<EpisodeRow>& rows, const std::string& title);
 
