@@ -135,7 +135,7 @@ void runMap(const MapArgs& a) {
     const RegionQuality rq = regionQuality(sg, world);
     stats["regions"] = {{"count", rq.count},           {"purity", rq.purity},
                         {"ari", rq.ari},               {"nodes_scored", rq.nodes_scored},
-                        {"rooms_touched", rq.rooms_touched}};
+                        {"rooms_touched", rq.rooms_touched}, {"largest_share", rq.largest_share}};
   }
   if (const ObjectLayer* objs = mapper.objects()) {
     const std::unique_ptr<TextEncoder> encoder = makeTextEncoder(cfg.perception);
@@ -200,7 +200,8 @@ void runMap(const MapArgs& a) {
                 stats["skeleton"]["navigable_coverage"].get<double>(),
                 stats["skeleton"]["path_success"].get<double>(), stats["skeleton"]["path_pairs"].get<int>());
   if (a.skeleton)
-    std::printf("regions: %d, purity %.3f, ARI %.3f (%d nodes in rooms)\n", stats["regions"]["count"].get<int>(),
+    std::printf("regions: %d, the largest holds %.0f %% of the nodes, purity %.3f, ARI %.3f (%d nodes in rooms)\n",
+                stats["regions"]["count"].get<int>(), 100.0 * stats["regions"]["largest_share"].get<double>(),
                 stats["regions"]["purity"].get<double>(), stats["regions"]["ari"].get<double>(),
                 stats["regions"]["nodes_scored"].get<int>());
   if (stats.contains("objects"))

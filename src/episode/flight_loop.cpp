@@ -259,10 +259,8 @@ void FlightLoop::finish() {
   R_.reasoner_fallbacks = decider_ ? decider_->stats().fallbacks : 0;
   {
     const RegionQuality rq = regionQuality(run_.graph, sim_.world());
-    size_t largest = 0, nodes = 0;
-    for (const SgRegion& r : run_.graph.regions) largest = std::max(largest, r.nodes.size()), nodes += r.nodes.size();
     R_.region_count = rq.count;
-    R_.region_largest_share = nodes ? double(largest) / double(nodes) : 0.0;
+    R_.region_largest_share = rq.largest_share;
     R_.region_ari = rq.nodes_scored > 1 ? rq.ari : -1.0;
     R_.regions = {{"count", rq.count}, {"largest_share", R_.region_largest_share}, {"nodes_in_rooms", rq.nodes_scored},
                   {"rooms_touched", rq.rooms_touched}};

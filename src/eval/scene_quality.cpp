@@ -1,5 +1,6 @@
 #include "ussnav/eval/scene_quality.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <unordered_map>
 
@@ -11,8 +12,12 @@ RegionQuality regionQuality(const SceneGraph& g, const World& world) {
   RegionQuality q;
   q.count = int(g.regions.size());
   std::unordered_map<int, int> region_of;
-  for (const SgRegion& r : g.regions)
+  size_t largest = 0;
+  for (const SgRegion& r : g.regions) {
     for (int n : r.nodes) region_of[n] = r.id;
+    largest = std::max(largest, r.nodes.size());
+  }
+  q.largest_share = region_of.empty() ? 0.0 : double(largest) / double(region_of.size());
   std::vector<int> pred, truth;
   std::set<int> rooms;
   for (const SgNode& n : g.nodes) {

@@ -42,6 +42,8 @@ TEST(SceneQuality, RegionPurityAndAriAgainstRooms) {
   EXPECT_EQ(q.rooms_touched, 2);
   EXPECT_NEAR(q.purity, 5.0 / 6.0, 1e-12);
   EXPECT_NEAR(q.ari, 1.2 / 3.7, 1e-12);
+  // The largest region holds 4 of the 7 nodes in regions (node 6, outside the rooms, counts here).
+  EXPECT_NEAR(q.largest_share, 4.0 / 7.0, 1e-12);
 }
 
 TEST(SceneQuality, RegionLabelsAgainstTheRoomHoldingMostNodes) {

@@ -28,6 +28,7 @@ struct RegionQuality {
   int rooms_touched = 0;   // distinct rooms among the scored nodes
   double purity = 1.0;
   double ari = 1.0;
+  double largest_share = 0.0;  // the largest region's share of the nodes in regions (1: one for all)
 };
 RegionQuality regionQuality(const SceneGraph& g, const World& world);
 
