@@ -72,8 +72,10 @@ void runExplore(const ExploreArgs& a) {
     if (r.approach_shortest_m >= 0) std::printf(" (shortest from there %.1f m)", r.approach_shortest_m);
     std::printf("\n");
   }
-  std::printf("  scene graph: %zu nodes, %zu regions, %zu objects; camera saw %.0f of %.0f m^2 known\n",
-              run.graph.nodes.size(), run.graph.regions.size(), run.graph.objects.size(),
+  const auto many = [](size_t n) { return n == 1 ? "" : "s"; };
+  std::printf("  scene graph: %zu node%s, %zu region%s, %zu object%s; camera saw %.0f of %.0f m^2 known\n",
+              run.graph.nodes.size(), many(run.graph.nodes.size()), run.graph.regions.size(),
+              many(run.graph.regions.size()), run.graph.objects.size(), many(run.graph.objects.size()),
               r.coverage.empty() ? 0.0 : r.coverage.back().camera_seen_m2, r.coverage.empty() ? 0.0 : r.coverage.back().known_m2);
   if (r.region_count > 0) {
     std::printf("  regions (against ground truth): the largest holds %.0f %% of the nodes", 100.0 * r.region_largest_share);
