@@ -234,6 +234,11 @@ TEST(EvalReport, RegionColumnsRoundTripAndAreSummarised) {
   EXPECT_NEAR(back[0].region_largest_share, 0.5, 1e-4);
   EXPECT_NEAR(back[0].region_ari, 0.8, 1e-4);
   EXPECT_NEAR(back[1].region_ari, -1.0, 1e-9);
+  // A region column that is not a number (an interrupted write): the row is dropped and counted.
+  std::string garbled = toCsv(a);
+  garbled.replace(garbled.rfind(','), std::string::npos, ",x");
+  EXPECT_TRUE(readEpisodesCsv(writeText("regions_garbled.csv", csvHeader() + "\n" + garbled + "\n"), &bad).empty());
+  EXPECT_EQ(bad, 1);
   // Means by hand: count (6 + 2 + 4) / 3 = 4, share (0.5 + 0.9 + 0.4) / 3 = 0.6, ARI over the two
   // episodes in a world with rooms (0.8 + 0.4) / 2 = 0.6.
   const auto j = summaryJson({a, b, c, row("frontier", "multi_room", true, 0.3, 10)});
