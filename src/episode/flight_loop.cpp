@@ -201,7 +201,10 @@ std::optional<std::vector<Vec3>> FlightLoop::flightPath(const Vec3& a, const Vec
   // The full clearance where a path keeps it; else UAV radius + 0.1 m (a point in a voxel is up
   // to 0.087 m from its centre) through space seen free; only when none does may a detour cross
   // voxels not seen yet.
-  auto plan = planFlightPathLadder(mapper_.graph(), mapper_.grid(), a, b, flight_.options, flight_.clearances);
+  // Places paths were found blocked at that the window has forgotten stay out of the path.
+  FlightPathOptions opt = flight_.options;
+  opt.avoid = blocked_.forgotten(mapper_.grid());
+  auto plan = planFlightPathLadder(mapper_.graph(), mapper_.grid(), a, b, opt, flight_.clearances);
   if (!plan) return std::nullopt;
   last_clearance_ = plan->clearance;
   ++R_.paths_planned;
@@ -226,6 +229,7 @@ void FlightLoop::finish() {
   R_.time_s = t_;
   R_.path_length_m = uav_.distanceTravelled();
   R_.collisions = uav_.collisions();
+  R_.blocked_spots = int(blocked_.size());
   R_.spl = R_.success && R_.shortest_path_m >= 0
                ? splOf(true, R_.path_length_m, std::max(R_.shortest_path_m, 1e-6))
                : 0.0;

@@ -126,6 +126,7 @@ class FlightLoop {
   Goal g_;
   TargetMemory memory_;  // targets given up on (search_memory.hpp)
   ObjectTries tries_;    // goal objects tried
+  BlockedSpots blocked_;  // where paths being flown were found blocked
   std::vector<ExplorationTarget> targets_;
   double last_check_ = -1e9;  // the last re-plan or target check
   int spins_left_ = -1;       // -1: not spinning; else yaw steps left before giving up

@@ -98,6 +98,8 @@ std::optional<std::vector<Vec3>> planFrom(const ConnectivityGraph& g, const Roll
   auto inWindow = [&](const Vec3& p) { return grid.inWindow(grid.keyOf(p)); };
   PathSearchOptions opt;
   opt.shortcut = false;
+  opt.avoid = fo.avoid;
+  opt.avoid_radius = fo.avoid_radius;
   const GraphPath gp = g.size() > 0 ? findGraphPath(g, grid, from, to, opt) : GraphPath{};
   const bool dbg = std::getenv("USSNAV_DEBUG_PATH") != nullptr;
   if (!gp.found) {
@@ -144,6 +146,11 @@ std::optional<std::vector<Vec3>> planFrom(const ConnectivityGraph& g, const Roll
     }
     out.push_back(b);
   }
+  // A window-edge detour or an attachment may still pass a place remembered blocked.
+  if (polylinePassesNear(out, fo.avoid, fo.avoid_radius)) {
+    if (dbg) std::fprintf(stderr, "  path: passes a place found blocked before\n");
+    return std::nullopt;
+  }
   return out;
 }
 
@@ -179,14 +186,14 @@ std::optional<FlightPlan> planFlightPathLadder(const ConnectivityGraph& g, const
   return std::nullopt;
 }
 
-bool pathBlocked(const OccupancyMap& map, const std::vector<Vec3>& path, double horizon) {
+std::optional<Vec3> blockedAt(const OccupancyMap& map, const std::vector<Vec3>& path, double horizon) {
   double walked = 0.0;
   const size_t first = !path.empty() && map.stateAt(path[0]) == VoxelState::Occupied ? 2 : 1;
   for (size_t i = first; i < path.size() && walked < horizon; ++i) {
-    if (castRay(map, path[i - 1], path[i], false).blocked) return true;
+    if (const RayHit hit = castRay(map, path[i - 1], path[i], false); hit.blocked) return hit.point;
     walked += (path[i] - path[i - 1]).norm();
   }
-  return false;
+  return std::nullopt;
 }
 
 FlightSettings flightSettings(const Config& cfg, double flight_z) {

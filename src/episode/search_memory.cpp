@@ -89,4 +89,17 @@ bool ObjectTries::pendingRetry(double t) const {
   return std::any_of(retry_at_.begin(), retry_at_.end(), [&](const auto& r) { return r.second > t && r.second < kForGoodBelow; });
 }
 
+void BlockedSpots::add(const Vec3& p) {
+  if (std::any_of(spots_.begin(), spots_.end(), [&](const Vec3& q) { return (q - p).norm() < kSame; })) return;
+  if (spots_.size() >= kMax) spots_.erase(spots_.begin());
+  spots_.push_back(p);
+}
+
+std::vector<Vec3> BlockedSpots::forgotten(const OccupancyMap& map) const {
+  std::vector<Vec3> out;
+  for (const Vec3& p : spots_)
+    if (map.stateAt(p) == VoxelState::Unknown) out.push_back(p);
+  return out;
+}
+
 }  // namespace ussnav

@@ -140,7 +140,11 @@ GraphPath findGraphPath(const ConnectivityGraph& g, const OccupancyMap& map, con
       const ScgEdge& ed = g.edges()[size_t(e)];
       const int v = ed.a == u ? ed.b : ed.a;
       if (closed[size_t(v)] || ed.blocked) continue;
-      if (edge_ok[size_t(e)] < 0) edge_ok[size_t(e)] = polylineClear(map, g.edgePolyline(e), false, clearance) ? 1 : 0;
+      if (edge_ok[size_t(e)] < 0) {
+        const std::vector<Vec3> poly = g.edgePolyline(e);
+        edge_ok[size_t(e)] =
+            polylineClear(map, poly, false, clearance) && !polylinePassesNear(poly, opt.avoid, opt.avoid_radius) ? 1 : 0;
+      }
       if (!edge_ok[size_t(e)]) continue;
       relax(v, cost[size_t(u)] + ed.length);
     }

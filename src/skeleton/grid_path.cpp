@@ -35,6 +35,19 @@ bool polylineClear(const OccupancyMap& map, const std::vector<Vec3>& pts, bool u
   return true;
 }
 
+bool polylinePassesNear(const std::vector<Vec3>& pts, std::span<const Vec3> spots, double radius) {
+  for (const Vec3& s : spots) {
+    if (pts.size() == 1 && (s - pts[0]).norm() <= radius) return true;
+    for (size_t i = 1; i < pts.size(); ++i) {
+      const Vec3 &a = pts[i - 1], d = pts[i] - a;
+      const double l2 = d.squaredNorm();
+      const double t = l2 > 0.0 ? std::clamp((s - a).dot(d) / l2, 0.0, 1.0) : 0.0;
+      if ((a + t * d - s).norm() <= radius) return true;
+    }
+  }
+  return false;
+}
+
 std::vector<Vec3> shortcutPolyline(const OccupancyMap& map, const std::vector<Vec3>& pts,
                                    bool unknown_blocks, double clearance) {
   if (pts.size() <= 2) return pts;

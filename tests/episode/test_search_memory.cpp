@@ -1,7 +1,9 @@
-// TargetMemory and ObjectTries: what the flight loop gives up on, for how long, and when for good.
+// TargetMemory, ObjectTries and BlockedSpots: what the flight loop gives up on, for how long, and
+// when for good, and where paths were found blocked.
 
 #include <gtest/gtest.h>
 
+#include "support/dense_grid.hpp"
 #include "ussnav/episode/search_memory.hpp"
 
 using namespace ussnav;
@@ -116,4 +118,23 @@ TEST(ObjectTries, AFailedSightingCountsNoFailure) {
   EXPECT_FALSE(o.skipped(10, 1.0));
   EXPECT_TRUE(o.sightingChecked(10));
   EXPECT_FALSE(o.sightingChecked(11));
+}
+
+TEST(BlockedSpots, KeptOnceAndGivenBackWhereTheMapHasForgottenThem) {
+  BlockedSpots b;
+  b.add(Vec3(1.0, 1.0, 1.2));
+  b.add(Vec3(1.1, 1.05, 1.2));  // 0.11 m away: the same spot
+  b.add(Vec3(3.0, 1.0, 1.2));
+  EXPECT_EQ(b.size(), 2u);
+  // The map knows x < 2 (free), nothing beyond: only the spot at x = 3 is forgotten.
+  test::DenseGrid map(Aabb::of(Vec3(0, 0, 0), Vec3(4, 2, 2.4)), 0.1);
+  map.fill(Aabb::of(Vec3(0, 0, 0), Vec3(2, 2, 2.4)), VoxelState::Free);
+  const std::vector<Vec3> f = b.forgotten(map);
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_EQ(f[0], Vec3(3.0, 1.0, 1.2));
+  // At most kMax, the oldest dropped first.
+  for (size_t i = 0; i < BlockedSpots::kMax; ++i) b.add(Vec3(10.0 + 0.5 * double(i), 0, 1.2));
+  EXPECT_EQ(b.size(), BlockedSpots::kMax);
+  EXPECT_EQ(b.forgotten(map).size(), BlockedSpots::kMax);  // all beyond the known part now
+  for (const Vec3& p : b.forgotten(map)) EXPECT_GE(p.x(), 10.0);
 }

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 
 #include "support/skeleton_scenes.hpp"
 #include "ussnav/core/error.hpp"
@@ -236,4 +237,50 @@ TEST(GraphSearch, ObstaclesSeenLaterAreRecordedAndAvoided) {
       ASSERT_FALSE(pillar.contains(q)) << "path through the pillar at " << q.transpose();
     }
   EXPECT_TRUE(truth.grid.stateAt(p.points.front()) == VoxelState::Free);
+}
+
+TEST(GridPath, PolylinePassesNearMeasuresTheDistanceToEachSegment) {
+  const std::vector<Vec3> pts{Vec3(0, 0, 1), Vec3(2, 0, 1), Vec3(2, 2, 1)};
+  auto near = [&](const Vec3& s, double r) { return polylinePassesNear(pts, std::vector<Vec3>{s}, r); };
+  EXPECT_TRUE(near(Vec3(1.0, 0.25, 1), 0.3));   // 0.25 m beside the first segment
+  EXPECT_FALSE(near(Vec3(1.0, 0.35, 1), 0.3));
+  EXPECT_TRUE(near(Vec3(-0.2, 0.1, 1), 0.3));   // 0.22 m from the first point
+  EXPECT_FALSE(near(Vec3(-0.3, 0.0, 1), 0.25));  // past the end: the distance is to the end point
+  EXPECT_TRUE(near(Vec3(1.8, 1.0, 1), 0.3));    // 0.2 m beside the second segment
+  EXPECT_FALSE(near(Vec3(1.0, 1.0, 1), 0.9));   // the corner's inside, 1 m from both
+  EXPECT_FALSE(polylinePassesNear(pts, {}, 5.0));
+  EXPECT_TRUE(polylinePassesNear({Vec3(0, 0, 0)}, std::vector<Vec3>{Vec3(0.1, 0, 0)}, 0.2));  // a single point
+}
+
+TEST(GraphSearch, EdgesPassingAPointToAvoidAreNotUsed) {
+  // A room with a pillar in its middle: two ways round it. With a point of the first path's
+  // way round to avoid, no edge of the next path comes near it.
+  BoxRoomScene scene = boxRoomGrid(Vec3(6.0, 4.0, 2.6));
+  scene.grid.wall(Aabb::of(Vec3(2.6, 1.0, 0.0), Vec3(3.4, 3.0, 2.6)));
+  ConnectivityGraph g;
+  grow(g, scene.grid, Vec3(1.0, 2.0, 1.2));
+  grow(g, scene.grid, Vec3(5.0, 2.0, 1.2));
+  const Vec3 start(1.0, 2.0, 1.2), goal(5.0, 2.0, 1.2);
+  PathSearchOptions opt;
+  opt.shortcut = false;
+  const GraphPath first = findGraphPath(g, scene.grid, start, goal, opt);
+  ASSERT_TRUE(first.found);
+  // Where the first path passes the pillar (x = 3).
+  std::optional<Vec3> spot;
+  for (size_t i = 1; i < first.points.size(); ++i) {
+    const Vec3 &a = first.points[i - 1], &b = first.points[i];
+    if ((a.x() - 3.0) * (b.x() - 3.0) <= 0.0 && std::abs(b.x() - a.x()) > 1e-9)
+      spot = a + (b - a) * ((3.0 - a.x()) / (b.x() - a.x()));
+  }
+  ASSERT_TRUE(spot.has_value());
+  opt.avoid = {*spot};
+  opt.avoid_radius = 0.3;
+  const GraphPath second = findGraphPath(g, scene.grid, start, goal, opt);
+  ASSERT_TRUE(second.found) << "a way round the other side";
+  expectClearPolyline(scene.grid, second.points);
+  for (size_t i = 1; i < second.nodes.size(); ++i) {
+    const int e = g.edgeBetween(second.nodes[i - 1], second.nodes[i]);
+    EXPECT_FALSE(polylinePassesNear(g.edgePolyline(e), opt.avoid, opt.avoid_radius))
+        << "edge " << second.nodes[i - 1] << "-" << second.nodes[i] << " passes (" << spot->transpose() << ")";
+  }
 }

@@ -33,6 +33,10 @@ struct FlightPathOptions {
   // Detours inside the window may cross unknown voxels: a last resort for the caller when no
   // path keeps to seen-free space (the UAV boxed in by what its sensors have not seen yet).
   bool detour_through_unknown = false;
+  // Places a path was found blocked at that the map no longer knows (beyond the window): no
+  // graph edge and no segment of the path comes within avoid_radius of them.
+  std::vector<Vec3> avoid;
+  double avoid_radius = 0.3;
 };
 
 std::optional<std::vector<Vec3>> planFlightPath(const ConnectivityGraph& g, const RollingGrid& grid, const Vec3& from,
@@ -63,8 +67,12 @@ std::optional<FlightPlan> planFlightPathLadder(const ConnectivityGraph& g, const
 // its centre).
 // Whether the first `horizon` metres of a polyline cross an obstacle of `map` (pass an
 // InflatedMap for a margin). When the polyline starts inside an obstacle (the UAV inside the
-// margin), the first segment is the escape step out of it and is not judged.
-bool pathBlocked(const OccupancyMap& map, const std::vector<Vec3>& path, double horizon);
+// margin), the first segment is the escape step out of it and is not judged. blockedAt gives
+// where the first blocked segment meets the obstacle.
+std::optional<Vec3> blockedAt(const OccupancyMap& map, const std::vector<Vec3>& path, double horizon);
+inline bool pathBlocked(const OccupancyMap& map, const std::vector<Vec3>& path, double horizon) {
+  return blockedAt(map, path, horizon).has_value();
+}
 
 struct FlightSettings {
   FlightPathOptions options;

@@ -10,6 +10,8 @@
 //    refunded (up to kMaxTransitReplans); failures from afar count for good only after
 //    kMaxFarTries. A sighting (an object seen too few times to be declared yet) is approached
 //    once: when that fails, it waits until it has been seen often enough, no failure counted.
+//  - BlockedSpots: where a path being flown was found blocked, for the paths planned after
+//    the rolling window has forgotten the obstacle there.
 // Time is the episode's clock (s). Plain state, no I/O.
 
 #include <map>
@@ -18,6 +20,7 @@
 #include <vector>
 
 #include "ussnav/core/types.hpp"
+#include "ussnav/mapping/occupancy.hpp"
 
 namespace ussnav {
 
@@ -91,6 +94,26 @@ class ObjectTries {
   std::set<int> sightings_failed_;
   std::map<int, std::vector<Vec3>> no_pose_from_, no_view_from_;
   std::map<int, std::pair<Vec3, double>> seen_from_;  // id -> spot, its distance to the object
+};
+
+// Where a path being flown was found blocked (the point its segment met the inflated map's
+// obstacle). Once the window has moved on, the map holds nothing there, and a graph edge that
+// passes too close to the obstacle for the UAV's margin looks clear again: the same path came
+// back every time (held-out house_6 "toilet", unknown_volume_weight 10: two targets, each path
+// blocked just past the other side of one door, the UAV shuttling through it every 12 s).
+// forgotten() are the spots the map no longer knows, for FlightPathOptions::avoid; where the
+// map knows the place again, it decides. At most kMax spots (the oldest go first).
+class BlockedSpots {
+ public:
+  static constexpr size_t kMax = 256;
+  static constexpr double kSame = 0.2;  // m: a spot this close to a remembered one is not added
+
+  void add(const Vec3& p);
+  std::vector<Vec3> forgotten(const OccupancyMap& map) const;
+  size_t size() const { return spots_.size(); }
+
+ private:
+  std::vector<Vec3> spots_;
 };
 
 }  // namespace ussnav

@@ -6,6 +6,7 @@
 // (a few thousand voxels for 3 m at 0.1 m).
 
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "ussnav/mapping/occupancy.hpp"
@@ -39,5 +40,8 @@ double polylineLength(const std::vector<Vec3>& pts);
 // Whether every segment of the polyline is in tube of sight (see tubeOfSight).
 bool polylineClear(const OccupancyMap& map, const std::vector<Vec3>& pts, bool unknown_blocks,
                    double clearance = 0.0);
+
+// Whether a segment of the polyline comes within `radius` of one of `spots`.
+bool polylinePassesNear(const std::vector<Vec3>& pts, std::span<const Vec3> spots, double radius);
 
 }  // namespace ussnav
