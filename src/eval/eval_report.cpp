@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cstdio>
 #include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
+#include <stdexcept>
+#include <system_error>
 
 #include "ussnav/eval/metrics.hpp"
 
@@ -44,6 +47,15 @@ const char* const kHeaderLabels =
 const char* const kHeaderSighting =
     "world,goal,planner,seed,split,success,spl,path_length_m,shortest_path_m,time_s,frames,collisions,end_reason,"
     "found_label,update_hz,wall_s,labels_scored,labels_correct,search_m,approach_shortest_m,view_shortest_m";
+
+// A CSV field that is a number and nothing else ("0.8x" is not 0.8, as std::stod would read it).
+template <typename T>
+T whole(const std::string& s) {
+  T v{};
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size()) throw std::invalid_argument("number");
+  return v;
+}
 
 }  // namespace
 
@@ -89,6 +101,7 @@ std::vector<EpisodeRow> readEpisodesCsv(const std::filesystem::path& path, int* 
   std::string line;
   bool header = true;
   while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();  // written on Windows
     if (header) {
       header = false;
       if (line == csvHeader() || line == kHeaderBefore || line == kHeaderLabels || line == kHeaderSighting) continue;
@@ -99,17 +112,17 @@ std::vector<EpisodeRow> readEpisodesCsv(const std::filesystem::path& path, int* 
           int(f.size()) != kColumnsBefore)
         throw std::invalid_argument("columns");
       EpisodeRow r;
-      r.world = f[0], r.goal = f[1], r.planner = f[2], r.seed = std::stoull(f[3]), r.split = f[4];
+      r.world = f[0], r.goal = f[1], r.planner = f[2], r.seed = whole<unsigned long long>(f[3]), r.split = f[4];
       if (r.split != "single_room" && r.split != "multi_room") throw std::invalid_argument("split");
-      r.success = std::stoi(f[5]) != 0, r.spl = std::stod(f[6]), r.path_length_m = std::stod(f[7]);
-      r.shortest_path_m = std::stod(f[8]), r.time_s = std::stod(f[9]), r.frames = std::stoi(f[10]);
-      r.collisions = std::stoi(f[11]), r.end_reason = f[12], r.found_label = f[13], r.update_hz = std::stod(f[14]);
-      r.wall_s = std::stod(f[15]);
-      if (int(f.size()) >= kColumnsLabels) r.labels_scored = std::stoi(f[16]), r.labels_correct = std::stoi(f[17]);
+      r.success = whole<int>(f[5]) != 0, r.spl = whole<double>(f[6]), r.path_length_m = whole<double>(f[7]);
+      r.shortest_path_m = whole<double>(f[8]), r.time_s = whole<double>(f[9]), r.frames = whole<int>(f[10]);
+      r.collisions = whole<int>(f[11]), r.end_reason = f[12], r.found_label = f[13], r.update_hz = whole<double>(f[14]);
+      r.wall_s = whole<double>(f[15]);
+      if (int(f.size()) >= kColumnsLabels) r.labels_scored = whole<int>(f[16]), r.labels_correct = whole<int>(f[17]);
       if (int(f.size()) >= kColumnsSighting)
-        r.search_m = std::stod(f[18]), r.approach_shortest_m = std::stod(f[19]), r.view_shortest_m = std::stod(f[20]);
+        r.search_m = whole<double>(f[18]), r.approach_shortest_m = whole<double>(f[19]), r.view_shortest_m = whole<double>(f[20]);
       if (int(f.size()) >= kColumns)
-        r.region_count = std::stoi(f[21]), r.region_largest_share = std::stod(f[22]), r.region_ari = std::stod(f[23]);
+        r.region_count = whole<int>(f[21]), r.region_largest_share = whole<double>(f[22]), r.region_ari = whole<double>(f[23]);
       rows.push_back(r);
     } catch (const std::exception&) {
       if (bad) ++*bad;

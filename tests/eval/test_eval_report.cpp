@@ -89,6 +89,16 @@ TEST(EvalReport, CsvRoundTripAndCutLinesAreSkipped) {
   EXPECT_NEAR(rows[0].spl, 0.4, 1e-4);
   EXPECT_NEAR(rows[0].path_length_m, 12.5, 1e-3);
   EXPECT_EQ(rows[0].found_label, "bed  king size");
+  // A number with something after it is not a number ("0.4000x" was read as 0.4); a line ending
+  // in CR (the file saved on Windows) still reads.
+  std::string trailing = toCsv(a);
+  trailing.replace(trailing.find(",0.4000,"), 8, ",0.4000x,");
+  EXPECT_TRUE(readEpisodesCsv(writeText("trailing.csv", csvHeader() + "\n" + trailing + "\n"), &bad).empty());
+  EXPECT_EQ(bad, 1);
+  const auto crlf = readEpisodesCsv(writeText("crlf.csv", csvHeader() + "\r\n" + toCsv(a) + "\r\n"), &bad);
+  ASSERT_EQ(crlf.size(), 1u);
+  EXPECT_EQ(bad, 0);
+  EXPECT_EQ(crlf[0].key(), a.key());
 }
 
 TEST(EvalReport, RegionLabelColumnsRoundTripAndOldFilesStillLoad) {
