@@ -213,6 +213,11 @@ std::optional<std::vector<Vec3>> FlightLoop::flightPath(const Vec3& a, const Vec
   return std::move(plan->path);
 }
 
+int FlightLoop::rememberObstacle(const Vec3& hit, double margin) {
+  // The voxels whose inflation by `margin` reaches the hit point (within half a voxel diagonal).
+  return blocked_.add(mapper_.grid(), hit, margin + 0.5 * std::sqrt(3.0) * mapper_.grid().resolution());
+}
+
 void FlightLoop::refreshSemantics() {
   if (!labeler_ || semantics_t_ == t_) return;
   const Stopwatch sw;
@@ -229,7 +234,7 @@ void FlightLoop::finish() {
   R_.time_s = t_;
   R_.path_length_m = uav_.distanceTravelled();
   R_.collisions = uav_.collisions();
-  R_.blocked_spots = int(blocked_.size());
+  R_.remembered_obstacles = int(blocked_.size());
   R_.spl = R_.success && R_.shortest_path_m >= 0
                ? splOf(true, R_.path_length_m, std::max(R_.shortest_path_m, 1e-6))
                : 0.0;

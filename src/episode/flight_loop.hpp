@@ -72,6 +72,7 @@ class FlightLoop {
 
   void setupReasoning(const EpisodeSpec& spec);
   std::optional<std::vector<Vec3>> flightPath(const Vec3& a, const Vec3& b);
+  int rememberObstacle(const Vec3& hit, double margin);  // a path blocked at `hit` (BlockingObstacles)
   void startApproach(int id, ApproachPose pose, const std::vector<Vec3>& path, bool is_transit);
   void stopApproach();
   bool isMisreading(const MappedObject& o);
@@ -126,7 +127,7 @@ class FlightLoop {
   Goal g_;
   TargetMemory memory_;  // targets given up on (search_memory.hpp)
   ObjectTries tries_;    // goal objects tried
-  BlockedSpots blocked_;  // where paths being flown were found blocked
+  BlockingObstacles blocked_;  // obstacles that blocked paths being flown
   std::vector<ExplorationTarget> targets_;
   double last_check_ = -1e9;  // the last re-plan or target check
   int spins_left_ = -1;       // -1: not spinning; else yaw steps left before giving up

@@ -178,10 +178,11 @@ void FlightLoop::keepApproaching() {
     uav_.setYawTarget(approach_.yaw);
   else
     uav_.clearYawTarget();
-  const InflatedMap inflated(mapper_.grid(), std::min(cfg_.sim.uav.radius + 0.1, path_clearance_));
+  const double margin = std::min(cfg_.sim.uav.radius + 0.1, path_clearance_);
+  const InflatedMap inflated(mapper_.grid(), margin);
   const auto blocked_at = uav_.pathDone() ? std::nullopt : blockedAt(inflated, uav_.remainingPath(), 4.0);
   if (blocked_at) {
-    blocked_.add(*blocked_at);
+    rememberObstacle(*blocked_at, margin);
     // The map now shows an obstacle on the way: choose again. A transit cut short this way is no
     // try of the object: it is planned again from here (house_6 "toilet": the transits to the
     // bathroom were blocked at the same door each time and the toilet never reached).

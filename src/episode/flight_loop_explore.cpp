@@ -74,11 +74,14 @@ bool FlightLoop::needReplan(const char*& why) {
   }
   if (g_.active && !need && !uav_.pathDone()) {
     // Every frame: the next metres of the path against what the map knows now.
-    const InflatedMap inflated(mapper_.grid(), std::min(cfg_.sim.uav.radius + 0.1, path_clearance_));
+    const double margin = std::min(cfg_.sim.uav.radius + 0.1, path_clearance_);
+    const InflatedMap inflated(mapper_.grid(), margin);
     if (const auto at = blockedAt(inflated, uav_.remainingPath(), 4.0)) {
       need = true, why = "path blocked";
-      blocked_.add(*at);
-      if (debug_) std::fprintf(stderr, "[t=%.1f] path blocked at (%.2f %.2f %.2f)\n", t_, at->x(), at->y(), at->z());
+      const int added = rememberObstacle(*at, margin);
+      if (debug_)
+        std::fprintf(stderr, "[t=%.1f] path blocked at (%.2f %.2f %.2f), %d obstacle voxels remembered\n", t_, at->x(),
+                     at->y(), at->z(), added);
     }
   }
   if (need && spins_left_ > 0 && !uav_.idle()) need = false;  // finish the current spin step

@@ -99,7 +99,7 @@ std::optional<std::vector<Vec3>> planFrom(const ConnectivityGraph& g, const Roll
   PathSearchOptions opt;
   opt.shortcut = false;
   opt.avoid = fo.avoid;
-  opt.avoid_radius = fo.avoid_radius;
+  opt.avoid_radius = fo.clearance;
   const GraphPath gp = g.size() > 0 ? findGraphPath(g, grid, from, to, opt) : GraphPath{};
   const bool dbg = std::getenv("USSNAV_DEBUG_PATH") != nullptr;
   if (!gp.found) {
@@ -146,9 +146,9 @@ std::optional<std::vector<Vec3>> planFrom(const ConnectivityGraph& g, const Roll
     }
     out.push_back(b);
   }
-  // A window-edge detour or an attachment may still pass a place remembered blocked.
-  if (polylinePassesNear(out, fo.avoid, fo.avoid_radius)) {
-    if (dbg) std::fprintf(stderr, "  path: passes a place found blocked before\n");
+  // A window-edge detour or an attachment may still pass an obstacle remembered.
+  if (polylinePassesNear(out, fo.avoid, fo.clearance)) {
+    if (dbg) std::fprintf(stderr, "  path: passes a remembered obstacle\n");
     return std::nullopt;
   }
   return out;

@@ -89,16 +89,30 @@ bool ObjectTries::pendingRetry(double t) const {
   return std::any_of(retry_at_.begin(), retry_at_.end(), [&](const auto& r) { return r.second > t && r.second < kForGoodBelow; });
 }
 
-void BlockedSpots::add(const Vec3& p) {
-  if (std::any_of(spots_.begin(), spots_.end(), [&](const Vec3& q) { return (q - p).norm() < kSame; })) return;
-  if (spots_.size() >= kMax) spots_.erase(spots_.begin());
-  spots_.push_back(p);
+int BlockingObstacles::add(const OccupancyMap& map, const Vec3& hit, double radius) {
+  const Vec3i lo = map.keyOf(hit - Vec3::Constant(radius)), hi = map.keyOf(hit + Vec3::Constant(radius));
+  int added = 0;
+  for (int x = lo.x(); x <= hi.x(); ++x)
+    for (int y = lo.y(); y <= hi.y(); ++y)
+      for (int z = lo.z(); z <= hi.z(); ++z) {
+        const Vec3i k(x, y, z);
+        const Vec3 lo = k.cast<double>() * map.resolution(), hi = lo + Vec3::Constant(map.resolution());
+        if ((hit.cwiseMax(lo).cwiseMin(hi) - hit).norm() > radius || map.state(k) != VoxelState::Occupied) continue;
+        if (!known_.insert({x, y, z}).second) continue;
+        if (voxels_.size() >= kMax) {
+          known_.erase({voxels_.front().x(), voxels_.front().y(), voxels_.front().z()});
+          voxels_.pop_front();
+        }
+        voxels_.push_back(k);
+        ++added;
+      }
+  return added;
 }
 
-std::vector<Vec3> BlockedSpots::forgotten(const OccupancyMap& map) const {
+std::vector<Vec3> BlockingObstacles::forgotten(const OccupancyMap& map) const {
   std::vector<Vec3> out;
-  for (const Vec3& p : spots_)
-    if (map.stateAt(p) == VoxelState::Unknown) out.push_back(p);
+  for (const Vec3i& k : voxels_)
+    if (map.state(k) == VoxelState::Unknown) out.push_back(map.centerOf(k));
   return out;
 }
 

@@ -252,9 +252,9 @@ TEST(FlightPath, RouteComingBackIntoTheWindowPassesADoor) {
 TEST(FlightPath, PlacesFoundBlockedBeyondTheWindowAreAvoided) {
   // A ring of corridors round a block (x 1.8-12.2, y -0.6-0.6), mapped all round; the UAV ends
   // in the north corridor at x = 6.5, where the window has forgotten both ends of the block.
-  // The path to the south corridor goes round one end. A place on that way, remembered as
-  // blocked (the flight loop's BlockedSpots: the window forgets what blocked a path there, and
-  // the same path came back), keeps every later path away from it.
+  // The path to the south corridor goes round one end. An obstacle remembered on that way (the
+  // flight loop's BlockingObstacles: the window forgets what blocked a path there, and the same
+  // path came back) keeps every later path its clearance away.
   test::BoxScene s;
   addBox(s, -0.5, -2.6, -0.2, 14.5, 2.6, 0.0);  // floor
   addBox(s, -0.5, -2.6, 2.7, 14.5, 2.6, 2.9);   // ceiling
@@ -291,8 +291,8 @@ TEST(FlightPath, PlacesFoundBlockedBeyondTheWindowAreAvoided) {
 
   opt.avoid = {*spot};
   const auto second = planFlightPath(f.graph, f.grid, here, goal, opt);
-  ASSERT_TRUE(second.has_value()) << "round the other end, or past the spot at more than avoid_radius";
-  EXPECT_FALSE(polylinePassesNear(*second, opt.avoid, opt.avoid_radius));
+  ASSERT_TRUE(second.has_value()) << "round the other end, or past the spot at more than the clearance";
+  EXPECT_FALSE(polylinePassesNear(*second, opt.avoid, opt.clearance));
   for (size_t i = 1; i < second->size(); ++i) {
     const Vec3 &a = (*second)[i - 1], &b = (*second)[i];
     const int n = int(std::ceil((b - a).norm() / 0.05));

@@ -1,7 +1,10 @@
-// TargetMemory, ObjectTries and BlockedSpots: what the flight loop gives up on, for how long, and
+// TargetMemory, ObjectTries and BlockingObstacles: what the flight loop gives up on, for how long, and
 // when for good, and where paths were found blocked.
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
 
 #include "support/dense_grid.hpp"
 #include "ussnav/episode/search_memory.hpp"
@@ -120,21 +123,40 @@ TEST(ObjectTries, AFailedSightingCountsNoFailure) {
   EXPECT_FALSE(o.sightingChecked(11));
 }
 
-TEST(BlockedSpots, KeptOnceAndGivenBackWhereTheMapHasForgottenThem) {
-  BlockedSpots b;
-  b.add(Vec3(1.0, 1.0, 1.2));
-  b.add(Vec3(1.1, 1.05, 1.2));  // 0.11 m away: the same spot
-  b.add(Vec3(3.0, 1.0, 1.2));
-  EXPECT_EQ(b.size(), 2u);
-  // The map knows x < 2 (free), nothing beyond: only the spot at x = 3 is forgotten.
+TEST(BlockingObstacles, TheVoxelsThatBlockedAPathAreKeptAndGivenBackOnceForgotten) {
+  // A wall x 2.0-2.2 (occupied voxels), free space in front of it, nothing known beyond x 3.
   test::DenseGrid map(Aabb::of(Vec3(0, 0, 0), Vec3(4, 2, 2.4)), 0.1);
   map.fill(Aabb::of(Vec3(0, 0, 0), Vec3(2, 2, 2.4)), VoxelState::Free);
+  map.fill(Aabb::of(Vec3(2.0, 0, 0), Vec3(2.2, 2, 2.4)), VoxelState::Occupied);
+  BlockingObstacles b;
+  // A path blocked at (1.65, 1.0, 1.2) by a 0.35 m margin: the wall voxels whose box comes
+  // within 0.35 + 0.087 m of it. The nearest face is at x = 2.0 (0.35 m away): the voxels of the
+  // first layer (x 2.0-2.1) with |dy|, |dz| small enough, none of the second (0.45 m away).
+  const double r = 0.35 + 0.5 * std::sqrt(3.0) * 0.1;
+  const int added = b.add(map, Vec3(1.65, 1.0, 1.2), r);
+  int expected = 0;
+  for (int y = 0; y < 20; ++y)
+    for (int z = 0; z < 24; ++z) {
+      const double dy = std::max({0.0, 0.1 * y - 1.0, 1.0 - 0.1 * (y + 1)});
+      const double dz = std::max({0.0, 0.1 * z - 1.2, 1.2 - 0.1 * (z + 1)});
+      expected += std::sqrt(0.35 * 0.35 + dy * dy + dz * dz) <= r;
+    }
+  EXPECT_EQ(added, expected);
+  EXPECT_GT(added, 4);
+  EXPECT_EQ(b.add(map, Vec3(1.65, 1.0, 1.2), r), 0);  // kept once
+  EXPECT_EQ(b.size(), size_t(added));
+  EXPECT_TRUE(b.forgotten(map).empty());  // the map still holds them
+  // The window moves on: the wall is forgotten, and every kept voxel comes back, as a centre.
+  map.setWindow(Aabb::of(Vec3(0, 0, 0), Vec3(1.5, 2, 2.4)));
   const std::vector<Vec3> f = b.forgotten(map);
-  ASSERT_EQ(f.size(), 1u);
-  EXPECT_EQ(f[0], Vec3(3.0, 1.0, 1.2));
+  ASSERT_EQ(f.size(), size_t(added));
+  for (const Vec3& c : f) EXPECT_NEAR(c.x(), 2.05, 1e-9);
   // At most kMax, the oldest dropped first.
-  for (size_t i = 0; i < BlockedSpots::kMax; ++i) b.add(Vec3(10.0 + 0.5 * double(i), 0, 1.2));
-  EXPECT_EQ(b.size(), BlockedSpots::kMax);
-  EXPECT_EQ(b.forgotten(map).size(), BlockedSpots::kMax);  // all beyond the known part now
-  for (const Vec3& p : b.forgotten(map)) EXPECT_GE(p.x(), 10.0);
+  test::DenseGrid big(Aabb::of(Vec3(0, 0, 0), Vec3(8, 8, 2.4)), 0.1, VoxelState::Occupied);
+  int more = 0;
+  for (int i = 0; i < 100; ++i) more += b.add(big, Vec3(0.5 + 0.7 * (i % 10), 0.5 + 0.7 * (i / 10), 1.2), 0.3);
+  ASSERT_GT(size_t(more), BlockingObstacles::kMax);
+  EXPECT_EQ(b.size(), BlockingObstacles::kMax);
+  map.resetWindow();
+  EXPECT_EQ(b.add(map, Vec3(1.65, 1.0, 1.2), r), added);  // the first ones went first: new again
 }

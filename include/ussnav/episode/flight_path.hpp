@@ -33,10 +33,9 @@ struct FlightPathOptions {
   // Detours inside the window may cross unknown voxels: a last resort for the caller when no
   // path keeps to seen-free space (the UAV boxed in by what its sensors have not seen yet).
   bool detour_through_unknown = false;
-  // Places a path was found blocked at that the map no longer knows (beyond the window): no
-  // graph edge and no segment of the path comes within avoid_radius of them.
+  // Obstacles the map no longer holds (beyond the window) that blocked a path before
+  // (BlockingObstacles): no graph edge and no segment of the path comes within `clearance` of them.
   std::vector<Vec3> avoid;
-  double avoid_radius = 0.3;
 };
 
 std::optional<std::vector<Vec3>> planFlightPath(const ConnectivityGraph& g, const RollingGrid& grid, const Vec3& from,

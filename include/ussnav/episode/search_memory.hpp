@@ -10,12 +10,14 @@
 //    refunded (up to kMaxTransitReplans); failures from afar count for good only after
 //    kMaxFarTries. A sighting (an object seen too few times to be declared yet) is approached
 //    once: when that fails, it waits until it has been seen often enough, no failure counted.
-//  - BlockedSpots: where a path being flown was found blocked, for the paths planned after
+//  - BlockingObstacles: where a path being flown was found blocked, for the paths planned after
 //    the rolling window has forgotten the obstacle there.
 // Time is the episode's clock (s). Plain state, no I/O.
 
+#include <deque>
 #include <map>
 #include <set>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -96,24 +98,28 @@ class ObjectTries {
   std::map<int, std::pair<Vec3, double>> seen_from_;  // id -> spot, its distance to the object
 };
 
-// Where a path being flown was found blocked (the point its segment met the inflated map's
-// obstacle). Once the window has moved on, the map holds nothing there, and a graph edge that
-// passes too close to the obstacle for the UAV's margin looks clear again: the same path came
-// back every time (held-out house_6 "toilet", unknown_volume_weight 10: two targets, each path
-// blocked just past the other side of one door, the UAV shuttling through it every 12 s).
-// forgotten() are the spots the map no longer knows, for FlightPathOptions::avoid; where the
-// map knows the place again, it decides. At most kMax spots (the oldest go first).
-class BlockedSpots {
+// The obstacles that blocked paths being flown: the occupied voxels around the point where a
+// path's segment met the inflated map. Once the window has moved on, the map holds nothing
+// there, and a graph edge that passes too close to the obstacle for the UAV's margin looks clear
+// again: the same path came back every time (held-out house_6 "toilet", unknown_volume_weight
+// 10: two targets, each path blocked just past the other side of one door, the UAV shuttling
+// through it every 12 s). forgotten() are the voxel centres the map no longer knows (Unknown), for
+// FlightPathOptions::avoid; where the map knows them again, it decides. At most kMax voxels (the
+// oldest go first).
+class BlockingObstacles {
  public:
-  static constexpr size_t kMax = 256;
-  static constexpr double kSame = 0.2;  // m: a spot this close to a remembered one is not added
+  static constexpr size_t kMax = 4096;
 
-  void add(const Vec3& p);
+  // The occupied voxels of `map` that come within `radius` of `hit` (the inflation that blocked
+  // the path, plus half a voxel diagonal: the hit lies on the inflated voxel's face). Returns how
+  // many were new.
+  int add(const OccupancyMap& map, const Vec3& hit, double radius);
   std::vector<Vec3> forgotten(const OccupancyMap& map) const;
-  size_t size() const { return spots_.size(); }
+  size_t size() const { return voxels_.size(); }
 
  private:
-  std::vector<Vec3> spots_;
+  std::deque<Vec3i> voxels_;  // in the order remembered
+  std::set<std::tuple<int, int, int>> known_;
 };
 
 }  // namespace ussnav
