@@ -287,9 +287,10 @@ struct ExplorationConfig {
   double yaw_step_deg = 5.0;        // yaws tried per viewpoint
   int min_viewpoint_gain = 10;      // viewpoints seeing fewer frontier cells are dropped
   int max_viewpoints = 10;          // best viewpoints kept per frontier
-  double unknown_volume_weight = 0.0; // a frontier's gain adds this many cells per m^3 of unknown
-                                    // space its best viewpoint looks into (band z only): a door
-                                    // onto an unexplored room is worth more than its doorway's cells
+  double unknown_volume_weight = 10.0;  // a frontier's gain adds this many cells per m^3 of
+                                        // unknown space its best viewpoint looks into (band z
+                                        // only): a door onto an unexplored room is worth more
+                                        // than its doorway's cells (0: FUEL's gain alone)
   // What the camera has seen (CameraCoverage): a 2-D map of known free space at flight height
   // and of the cells the depth camera has looked at; known-but-unseen patches become targets.
   double seen_resolution = 0.25;    // cell size of that map, m
