@@ -22,6 +22,18 @@ void addBox(test::BoxScene& s, double x0, double y0, double z0, double x1, doubl
   s.solids.push_back(Aabb(Vec3(x0, y0, z0), Vec3(x1, y1, z1)));
 }
 
+// A hall x -0.2-14.0, y -2.2-2.2, 2.7 m high, for a block to stand in.
+test::BoxScene hall() {
+  test::BoxScene s;
+  addBox(s, -0.5, -2.6, -0.2, 14.5, 2.6, 0.0);  // floor
+  addBox(s, -0.5, -2.6, 2.7, 14.5, 2.6, 2.9);   // ceiling
+  addBox(s, -0.4, -2.4, 0.0, 14.2, -2.2, 2.7);  // south wall
+  addBox(s, -0.4, 2.2, 0.0, 14.2, 2.4, 2.7);    // north wall
+  addBox(s, -0.4, -2.2, 0.0, -0.2, 2.2, 2.7);   // west wall
+  addBox(s, 14.0, -2.2, 0.0, 14.2, 2.2, 2.7);   // east wall
+  return s;
+}
+
 // From q to the nearest true solid of the scene.
 double distanceToSolids(const test::BoxScene& s, const Vec3& q) {
   double d = 1e9;
@@ -194,13 +206,7 @@ TEST(FlightPath, RouteComingBackIntoTheWindowPassesADoor) {
   // corridor's east end leaves the window westwards and comes back into it through the door: a
   // segment that starts outside the window and that the inflated door blocks (office-4
   // "toilet": the frontiers of a room behind such a route "unreachable", then blacklisted).
-  test::BoxScene s;
-  addBox(s, -0.5, -2.6, -0.2, 14.5, 2.6, 0.0);  // floor
-  addBox(s, -0.5, -2.6, 2.7, 14.5, 2.6, 2.9);   // ceiling
-  addBox(s, -0.4, -2.4, 0.0, 14.2, -2.2, 2.7);  // south wall
-  addBox(s, -0.4, 2.2, 0.0, 14.2, 2.4, 2.7);    // north wall
-  addBox(s, -0.4, -2.2, 0.0, -0.2, 2.2, 2.7);   // west wall
-  addBox(s, 14.0, -2.2, 0.0, 14.2, 2.2, 2.7);   // east wall
+  test::BoxScene s = hall();
   addBox(s, 1.8, -0.6, 0.0, 10.8, 0.6, 2.7);    // the block between the corridors, with a slit at
   addBox(s, 12.8, -0.6, 0.0, 14.0, 0.6, 2.7);   // x 10.8-12.8, z 1.0-1.4 (too low to fly through)
   addBox(s, 10.8, -0.6, 0.0, 12.8, 0.6, 1.0);   // through which the door is seen from the north
@@ -255,13 +261,7 @@ TEST(FlightPath, PlacesFoundBlockedBeyondTheWindowAreAvoided) {
   // The path to the south corridor goes round one end. An obstacle remembered on that way (the
   // flight loop's BlockingObstacles: the window forgets what blocked a path there, and the same
   // path came back) keeps every later path its clearance away.
-  test::BoxScene s;
-  addBox(s, -0.5, -2.6, -0.2, 14.5, 2.6, 0.0);  // floor
-  addBox(s, -0.5, -2.6, 2.7, 14.5, 2.6, 2.9);   // ceiling
-  addBox(s, -0.4, -2.4, 0.0, 14.2, -2.2, 2.7);  // south wall
-  addBox(s, -0.4, 2.2, 0.0, 14.2, 2.4, 2.7);    // north wall
-  addBox(s, -0.4, -2.2, 0.0, -0.2, 2.2, 2.7);   // west wall
-  addBox(s, 14.0, -2.2, 0.0, 14.2, 2.2, 2.7);   // east wall
+  test::BoxScene s = hall();
   addBox(s, 1.8, -0.6, 0.0, 12.2, 0.6, 2.7);    // the block
   const double z = 1.2;
   test::SceneFlight f(Vec3(6.5, -1.4, z));
