@@ -201,7 +201,7 @@ std::optional<std::vector<Vec3>> FlightLoop::flightPath(const Vec3& a, const Vec
   // The full clearance where a path keeps it; else UAV radius + 0.1 m (a point in a voxel is up
   // to 0.087 m from its centre) through space seen free; only when none does may a detour cross
   // voxels not seen yet.
-  // Places paths were found blocked at that the window has forgotten stay out of the path.
+  // Obstacles that blocked a path before and that the window has forgotten: kept clear of.
   FlightPathOptions opt = flight_.options;
   opt.avoid = blocked_.forgotten(mapper_.grid());
   auto plan = planFlightPathLadder(mapper_.graph(), mapper_.grid(), a, b, opt, flight_.clearances);

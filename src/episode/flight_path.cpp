@@ -98,7 +98,9 @@ std::optional<std::vector<Vec3>> planFrom(const ConnectivityGraph& g, const Roll
   auto inWindow = [&](const Vec3& p) { return grid.inWindow(grid.keyOf(p)); };
   PathSearchOptions opt;
   opt.shortcut = false;
-  opt.avoid = fo.avoid;
+  // Remembered obstacles within the clearance of the start cannot be kept clear of: not avoided.
+  for (const Vec3& s : fo.avoid)
+    if ((s - from).norm() > fo.clearance) opt.avoid.push_back(s);
   opt.avoid_radius = fo.clearance;
   const GraphPath gp = g.size() > 0 ? findGraphPath(g, grid, from, to, opt) : GraphPath{};
   const bool dbg = std::getenv("USSNAV_DEBUG_PATH") != nullptr;
@@ -147,7 +149,7 @@ std::optional<std::vector<Vec3>> planFrom(const ConnectivityGraph& g, const Roll
     out.push_back(b);
   }
   // A window-edge detour or an attachment may still pass an obstacle remembered.
-  if (polylinePassesNear(out, fo.avoid, fo.clearance)) {
+  if (polylinePassesNear(out, opt.avoid, fo.clearance)) {
     if (dbg) std::fprintf(stderr, "  path: passes a remembered obstacle\n");
     return std::nullopt;
   }

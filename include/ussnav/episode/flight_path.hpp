@@ -34,7 +34,8 @@ struct FlightPathOptions {
   // path keeps to seen-free space (the UAV boxed in by what its sensors have not seen yet).
   bool detour_through_unknown = false;
   // Obstacles the map no longer holds (beyond the window) that blocked a path before
-  // (BlockingObstacles): no graph edge and no segment of the path comes within `clearance` of them.
+  // (BlockingObstacles): no graph edge and no segment of the path comes within `clearance` of
+  // them (those already within it of the start excepted).
   std::vector<Vec3> avoid;
 };
 

@@ -10,8 +10,8 @@
 //    refunded (up to kMaxTransitReplans); failures from afar count for good only after
 //    kMaxFarTries. A sighting (an object seen too few times to be declared yet) is approached
 //    once: when that fails, it waits until it has been seen often enough, no failure counted.
-//  - BlockingObstacles: where a path being flown was found blocked, for the paths planned after
-//    the rolling window has forgotten the obstacle there.
+//  - BlockingObstacles: the occupied voxels that blocked a path being flown, kept for the paths
+//    planned after the rolling window has forgotten them.
 // Time is the episode's clock (s). Plain state, no I/O.
 
 #include <deque>

@@ -22,7 +22,7 @@ struct PathSearchOptions {
   // a node when the straight segment leaves the node's polyhedron for at most this long, m.
   double unknown_attach_max = 0.5;
   // Edges whose polyline passes within avoid_radius of one of these points are not used (the
-  // flight loop's memory of where a path was found blocked, for places the map has forgotten).
+  // flight loop's obstacles that blocked a path, once the map has forgotten them).
   std::vector<Vec3> avoid;
   double avoid_radius = 0.3;
 };
