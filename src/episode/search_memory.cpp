@@ -96,8 +96,9 @@ int BlockingObstacles::add(const OccupancyMap& map, const Vec3& hit, double radi
     for (int y = lo.y(); y <= hi.y(); ++y)
       for (int z = lo.z(); z <= hi.z(); ++z) {
         const Vec3i k(x, y, z);
-        const Vec3 lo = k.cast<double>() * map.resolution(), hi = lo + Vec3::Constant(map.resolution());
-        if ((hit.cwiseMax(lo).cwiseMin(hi) - hit).norm() > radius || map.state(k) != VoxelState::Occupied) continue;
+        const Vec3 box_min = k.cast<double>() * map.resolution(), box_max = box_min + Vec3::Constant(map.resolution());
+        const double to_box = (hit.cwiseMax(box_min).cwiseMin(box_max) - hit).norm();  // 0 inside the voxel
+        if (to_box > radius || map.state(k) != VoxelState::Occupied) continue;
         if (!known_.insert({x, y, z}).second) continue;
         if (voxels_.size() >= kMax) {
           known_.erase({voxels_.front().x(), voxels_.front().y(), voxels_.front().z()});
