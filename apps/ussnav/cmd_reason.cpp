@@ -113,6 +113,8 @@ void runGoto(const ReasonArgs& a) {
                             {"end", {fl.end.x(), fl.end.y(), fl.end.z()}},
                             {"flight_paths", fl.legs},
                             {"narrow_flight_paths", fl.narrow_legs},
+                            {"blocked_flight_paths", fl.blocked},
+                            {"remembered_obstacles", fl.remembered_obstacles},
                             {"final_region", reached_region},
                             {"collisions", fl.collisions}});
     std::printf("wrote %s\n", a.out.c_str());

@@ -10,6 +10,7 @@
 
 #include "ussnav/core/error.hpp"
 #include "ussnav/episode/flight_path.hpp"
+#include "ussnav/episode/search_memory.hpp"
 #include "ussnav/mapping/inflated_map.hpp"
 #include "ussnav/pipeline/mapper.hpp"
 #include "ussnav/sim/simulator.hpp"
@@ -63,8 +64,13 @@ RouteFlight flyRoute(Simulator& sim, const Config& cfg, const Pose& start, const
   bool final_leg = false;    // the path being flown ends at R.end
   double last_check = 0.0, last_try = -1.0, stalled_since = -1.0, t = 0.0;
   double path_margin = ep.clearance;  // of the path being flown
+  // Obstacles that blocked a path, kept clear of once the rolling window forgets them (as in an
+  // episode's flight loop): else the same blocked path comes back when the UAV turns round.
+  BlockingObstacles blocked;
   auto plan = [&](const Vec3& goal) -> std::optional<FlightPlan> {
-    auto p = planFlightPathLadder(mapper.graph(), mapper.grid(), uav.pose().position, goal, flight.options, flight.clearances);
+    FlightPathOptions fo = flight.options;
+    fo.avoid = blocked.forgotten(mapper.grid());
+    auto p = planFlightPathLadder(mapper.graph(), mapper.grid(), uav.pose().position, goal, fo, flight.clearances);
     if (p && std::getenv("USSNAV_DEBUG_PATH")) {
       std::fprintf(stderr, "  path to (%.2f %.2f), margin %.2f%s:", goal.x(), goal.y(), p->clearance, p->through_unknown ? ", through unknown" : "");
       for (const Vec3& q : p->path) std::fprintf(stderr, " (%.2f %.2f %.2f)", q.x(), q.y(), q.z());
@@ -107,8 +113,13 @@ RouteFlight flyRoute(Simulator& sim, const Config& cfg, const Pose& start, const
                   (!final_leg && !uav.pathDone() && remainingLength(uav) < 1.0);
     if (!replan && t - last_check >= replan_period) {
       last_check = t;
-      const InflatedMap inflated(mapper.grid(), std::min(cfg.sim.uav.radius + 0.1, path_margin));
-      replan = pathBlocked(inflated, uav.remainingPath(), 4.0);
+      const double margin = std::min(cfg.sim.uav.radius + 0.1, path_margin);
+      const InflatedMap inflated(mapper.grid(), margin);
+      if (const auto hit = blockedAt(inflated, uav.remainingPath(), 4.0)) {
+        replan = true;
+        ++R.blocked;
+        R.remembered_obstacles += blocked.add(mapper.grid(), *hit, margin + 0.5 * std::sqrt(3.0) * mapper.grid().resolution());
+      }
     }
     if (replan) {
       last_try = t;

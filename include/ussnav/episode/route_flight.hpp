@@ -11,7 +11,9 @@
 // UAV within the lookahead. A leg is re-planned when flown (an intermediate one 1 m before its
 // end) or when the map shows it blocked, not on a timer (a path starts at the live graph's node
 // nearest the UAV, often behind it). Without a safe path the UAV hovers and looks along the
-// route, then round, trying again every 0.5 s.
+// route, then round, trying again every 0.5 s. The occupied voxels that blocked a leg are
+// remembered (BlockingObstacles, search_memory.hpp): once the rolling window forgets them, later
+// legs keep their clearance from them.
 // The route's last point is walked back towards the one before it (0.2 m steps) until a safe
 // path reaches it (a goal set beside an object's box may lie inside the clearance margin).
 // Ends: arrived (within episode.goal_tolerance + 0.2 m of the last point reached), collision,
@@ -40,6 +42,8 @@ struct RouteFlight {
   int collisions = 0;
   int legs = 0;               // flight paths planned
   int narrow_legs = 0;        // of those, with a margin narrower than episode.clearance
+  int blocked = 0;            // legs re-planned because the map showed them blocked
+  int remembered_obstacles = 0;  // occupied voxels remembered at those blocks
   Vec3 end = Vec3::Zero();    // the route's last point as flown to (after walking it back)
   double end_shift_m = 0.0;   // how far it was walked back
   Pose final_pose;
