@@ -36,7 +36,8 @@ nlohmann::json toJson(const EpisodeResult& r) {
   j["unreachable_targets"] = r.unreachable;
   j["close_looks"] = r.close_looks;
   j["flight_paths"] = {{"planned", r.paths_planned}, {"narrow_margin", r.paths_narrow},
-                       {"through_unknown", r.paths_through_unknown}, {"remembered_obstacles", r.remembered_obstacles}};
+                       {"through_unknown", r.paths_through_unknown}, {"remembered_obstacles", r.remembered_obstacles},
+                       {"past_remembered", r.paths_past_remembered}};
   j["update_hz"] = r.update_hz;
   j["stage_ms"] = r.stage_ms;
   j["reasoning"] = r.reasoning;

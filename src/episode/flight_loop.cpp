@@ -210,6 +210,7 @@ std::optional<std::vector<Vec3>> FlightLoop::flightPath(const Vec3& a, const Vec
   ++R_.paths_planned;
   if (plan->clearance < ep_.clearance) ++R_.paths_narrow;
   if (plan->through_unknown) ++R_.paths_through_unknown;
+  if (plan->past_remembered) ++R_.paths_past_remembered;
   return std::move(plan->path);
 }
 

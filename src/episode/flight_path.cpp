@@ -150,7 +150,13 @@ std::optional<std::vector<Vec3>> planFrom(const ConnectivityGraph& g, const Roll
   }
   // A window-edge detour or an attachment may still pass an obstacle remembered.
   if (polylinePassesNear(out, opt.avoid, fo.clearance)) {
-    if (dbg) std::fprintf(stderr, "  path: passes a remembered obstacle\n");
+    if (dbg) {
+      std::fprintf(stderr, "  path from (%.2f %.2f %.2f): passes a remembered obstacle;", from.x(), from.y(), from.z());
+      for (const Vec3& s : opt.avoid)
+        if (polylinePassesNear(out, std::span<const Vec3>(&s, 1), fo.clearance))
+          std::fprintf(stderr, " (%.2f %.2f %.2f) %.2f m from the start", s.x(), s.y(), s.z(), (s - from).norm());
+      std::fprintf(stderr, "\n");
+    }
     return std::nullopt;
   }
   return out;
@@ -178,13 +184,20 @@ std::optional<std::vector<Vec3>> planFlightPath(const ConnectivityGraph& g, cons
 std::optional<FlightPlan> planFlightPathLadder(const ConnectivityGraph& g, const RollingGrid& grid, const Vec3& from,
                                                const Vec3& to, const FlightPathOptions& opt,
                                                std::span<const double> clearances) {
-  for (const bool unknown : {false, true})
-    for (const double c : clearances) {
-      FlightPathOptions o = opt;
-      o.clearance = c;
-      o.detour_through_unknown = unknown;
-      if (auto p = planFlightPath(g, grid, from, to, o)) return FlightPlan{std::move(*p), c, unknown};
+  FlightPathOptions o = opt;
+  for (const bool past : {false, true}) {
+    if (past) {
+      if (opt.avoid.empty()) break;
+      o.avoid.clear();
+      if (std::getenv("USSNAV_DEBUG_PATH")) std::fprintf(stderr, "  path: again, past the remembered obstacles\n");
     }
+    for (const bool unknown : {false, true})
+      for (const double c : clearances) {
+        o.clearance = c;
+        o.detour_through_unknown = unknown;
+        if (auto p = planFlightPath(g, grid, from, to, o)) return FlightPlan{std::move(*p), c, unknown, past};
+      }
+  }
   return std::nullopt;
 }
 

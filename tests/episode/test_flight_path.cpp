@@ -304,4 +304,20 @@ TEST(FlightPath, PlacesFoundBlockedBeyondTheWindowAreAvoided) {
   }
   std::printf("first round the %s end, passing (%.2f %.2f %.2f); then %zu points, %.1f m\n", west ? "west" : "east",
               spot->x(), spot->y(), spot->z(), second->size(), polylineLength(*second));
+
+  // Obstacles remembered across both ends (walls of them at y = 0, x -0.2-1.8 and 12.2-14.0):
+  // no path keeps clear of them, so the ladder flies past them (the map decides when the UAV
+  // gets there) rather than shutting the UAV in; with the one spot, it keeps clear as above.
+  const std::vector<double> clearances{0.35};
+  const auto one = planFlightPathLadder(f.graph, f.grid, here, goal, opt, clearances);
+  ASSERT_TRUE(one.has_value());
+  EXPECT_FALSE(one->past_remembered);
+  for (const double x0 : {-0.2, 12.2})
+    for (double x = x0; x <= x0 + 2.0; x += 0.2)
+      for (const double zz : {0.6, 0.9, 1.2, 1.5, 1.8}) opt.avoid.push_back(Vec3(x, 0.0, zz));
+  EXPECT_FALSE(planFlightPath(f.graph, f.grid, here, goal, opt).has_value());
+  const auto both = planFlightPathLadder(f.graph, f.grid, here, goal, opt, clearances);
+  ASSERT_TRUE(both.has_value());
+  EXPECT_TRUE(both->past_remembered);
+  EXPECT_LT((both->path.back() - goal).norm(), 0.6);
 }

@@ -73,6 +73,7 @@ struct EpisodeResult {
   // Flight paths planned, and how many of them needed a margin narrower than episode.clearance
   // or (the last resort) a detour through voxels not seen yet (planFlightPathLadder).
   int paths_planned = 0, paths_narrow = 0, paths_through_unknown = 0;
+  int paths_past_remembered = 0;  // found only with the remembered obstacles left out
   int remembered_obstacles = 0;  // occupied voxels kept because they blocked a path being flown (BlockingObstacles)
   double update_hz = 0.0;          // 1000 / median per-frame scene-graph update (ms)
   nlohmann::json stage_ms;         // {stage: {median, p95, count}}

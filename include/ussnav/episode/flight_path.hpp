@@ -47,6 +47,7 @@ struct FlightPlan {
   std::vector<Vec3> path;
   double clearance = 0.0;         // the margin it keeps from mapped obstacles, m
   bool through_unknown = false;   // a detour inside the window crosses voxels not seen yet
+  bool past_remembered = false;   // found only with the remembered obstacles left out
 };
 
 // The flight loop's attempts, in order: planFlightPath at each of `clearances` (widest first:
@@ -54,7 +55,10 @@ struct FlightPlan {
 // last resort, the same clearances again with detours through unseen voxels (opt's own
 // clearance and detour_through_unknown are overridden). Both rounds go to the narrowest margin:
 // beyond a narrow door that the rolling window has forgotten, only the narrowest margin passes
-// the door and only unseen voxels lead on. nullopt when every attempt fails.
+// the door and only unseen voxels lead on. When every attempt fails and opt.avoid is not empty,
+// the whole ladder once more without it: remembered obstacles are kept clear of where a path
+// can be, and left to the map where none can (a door whose jamb blocked a path once, and the
+// only way back, would otherwise shut the UAV in). nullopt when every attempt fails.
 std::optional<FlightPlan> planFlightPathLadder(const ConnectivityGraph& g, const RollingGrid& grid, const Vec3& from,
                                                const Vec3& to, const FlightPathOptions& opt,
                                                std::span<const double> clearances);
