@@ -182,7 +182,7 @@ void RegionPartitioner::partition(const IndexedGraph& g, const std::vector<char>
     report.leiden_communities = compactLabels(labels);
     report.merges = consolidate(
         sub, labels,
-        {cfg_.merge_shared_border_nodes, cfg_.border_edge_min_weight, cfg_.min_region_nodes});
+        {cfg_.merge_shared_border_nodes, cfg_.border_edge_min_weight, cfg_.min_region_nodes, cfg_.merge_min_opening_m});
     const int communities = compactLabels(labels);
 
     // Stable ids: optimal assignment of communities to the old regions by shared old nodes.

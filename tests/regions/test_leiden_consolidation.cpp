@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "ussnav/regions/consolidation.hpp"
@@ -152,4 +154,79 @@ TEST(Consolidation, TinyCommunitiesJoinTheirMostConnectedNeighbour) {
   const std::set<int> distinct(labels.begin(), labels.end());
   EXPECT_EQ(distinct.size(), 3u);  // A+50, B, and the isolated 60 that has nobody to join
   EXPECT_EQ(*distinct.rbegin(), 2);  // compacted to 0..2
+}
+
+namespace {
+
+// Two 5 x h lattices, x in [0, 4] and [6, 10], joined only by crossing edges from (4, b) to
+// (6, b') with b + b' in `sums`: each crosses the wall x = 5 at y = (b + b') / 2, so a sum s
+// is a door at y = s / 2.
+IndexedGraph roomsThroughDoors(int h, const std::vector<int>& sums) {
+  WeightedGraphView v;
+  addLattice(v, 0, 5, h, 0.0);
+  addLattice(v, 100, 5, h, 6.0);
+  for (int b = 0; b < h; ++b)
+    for (int c = 0; c < h; ++c)
+      if (std::find(sums.begin(), sums.end(), b + c) != sums.end()) v.edges.emplace_back(b * 5 + 4, 100 + c * 5, 1.0);
+  return indexGraph(v);
+}
+
+std::vector<int> bySide(const IndexedGraph& g) {
+  std::vector<int> labels(g.size());
+  for (int i = 0; i < g.size(); ++i) labels[i] = g.ids[i] >= 100 ? 1 : 0;
+  return labels;
+}
+
+}  // namespace
+
+TEST(Consolidation, TheOpeningIsTheNarrowestCrossSectionOfTheCrossingEdges) {
+  {  // Rows 0..4 linked straight across: a plane that cuts 3/4 of them cuts four rows at least,
+     // 3 m apart (4 m for all five across x = 5).
+    const IndexedGraph g = twoRooms(5, 5, 1.0);
+    const double w = crossingOpening(g, bySide(g), 0, 1, 0.5);
+    EXPECT_GE(w, 3.0);
+    EXPECT_LE(w, 4.0 + 1e-9);
+    EXPECT_NEAR(crossingOpening(g, bySide(g), 0, 1, 2.0), 0.0, 1e-9);  // no edge heavy enough
+  }
+  {  // Nine edges fanning through one door: they cross x = 5 at y = 2 and 2.5.
+    const IndexedGraph g = roomsThroughDoors(5, {4, 5});
+    const double w = crossingOpening(g, bySide(g), 0, 1, 0.5);
+    EXPECT_LE(w, 0.5 + 1e-9);
+    EXPECT_GT(w, 0.0);
+  }
+  {  // Two such doors 6 m apart in one wall: two openings, each as narrow as one door.
+    const IndexedGraph g = roomsThroughDoors(12, {4, 5, 16, 17});
+    EXPECT_LE(crossingOpening(g, bySide(g), 0, 1, 0.5), 0.5 + 1e-9);
+  }
+  {  // One crossing edge: no width.
+    const IndexedGraph g = twoRooms(5, 1, 1.0);
+    EXPECT_NEAR(crossingOpening(g, bySide(g), 0, 1, 0.5), 0.0, 1e-9);
+  }
+  {  // Eight radial edges round a circle (from radius 2.5 to 3.5, every 45 degrees): no line
+     // cuts 3/4 of them, so no single opening: the extent of their midpoints, a 6 x 6 m box.
+    WeightedGraphView v;
+    for (int k = 0; k < 8; ++k) {
+      const double a = k * 3.14159265358979323846 / 4.0;
+      v.node_ids.insert(v.node_ids.end(), {k, 100 + k});
+      v.centroids.emplace_back(2.5 * std::cos(a), 2.5 * std::sin(a), 1.2);
+      v.centroids.emplace_back(3.5 * std::cos(a), 3.5 * std::sin(a), 1.2);
+      v.edges.emplace_back(k, 100 + k, 1.0);
+    }
+    const IndexedGraph g = indexGraph(v);
+    EXPECT_NEAR(crossingOpening(g, bySide(g), 0, 1, 0.5), std::hypot(6.0, 6.0), 1e-9);
+  }
+}
+
+TEST(Consolidation, AMinimumOpeningKeepsRoomsApartThatShareManyBorderNodesThroughADoor) {
+  const IndexedGraph door = roomsThroughDoors(5, {4, 5});
+  ASSERT_EQ(sharedBorderNodes(door, bySide(door), 0.5).at({0, 1}), 10);
+  std::vector<int> labels = bySide(door);
+  EXPECT_EQ(consolidate(door, labels, {4, 0.5, 3, 0.0}), 1);  // counted only: merged
+  labels = bySide(door);
+  EXPECT_EQ(consolidate(door, labels, {4, 0.5, 3, 1.0}), 0);  // through a 0.5 m door: apart
+  EXPECT_EQ(communitiesOf(labels), 2);
+  const IndexedGraph open = twoRooms(5, 5, 1.0);
+  labels = bySide(open);
+  EXPECT_EQ(consolidate(open, labels, {4, 0.5, 3, 1.0}), 1);  // a 4 m opening: merged
+  EXPECT_EQ(communitiesOf(labels), 1);
 }

@@ -246,6 +246,7 @@ struct RegionsConfig {
   int iterations = -1;               // Leiden iterations; -1 = until the partition is stable
   int merge_shared_border_nodes = 12; // merge two adjacent regions sharing MORE border nodes
   double border_edge_min_weight = 0.5;  // lighter (forced) edges never make a border node
+  double merge_min_opening_m = 0.0;  // and only through an opening this wide (0: any)
   int min_region_nodes = 3;          // smaller regions join their most connected neighbour
   int seed = 1;                      // igraph RNG seed, reset before every Leiden call
   bool incremental = true;           // false: Leiden on the whole graph every update
@@ -256,6 +257,7 @@ struct RegionsConfig {
     v.field("iterations", iterations, -1, 1000, "-1 = until stable, 0 is rejected");
     v.field("merge_shared_border_nodes", merge_shared_border_nodes, 0, 100000, "nodes");
     v.field("border_edge_min_weight", border_edge_min_weight, 0.0, 1e9, "edge weight");
+    v.field("merge_min_opening_m", merge_min_opening_m, 0.0, 1000.0, "m");
     v.field("min_region_nodes", min_region_nodes, 1, 100000, "nodes");
     v.field("seed", seed, 0, 2147483647, "");
     v.field("incremental", incremental);
