@@ -12,6 +12,7 @@
 
 #include "english.hpp"
 #include "ussnav/reasoning/builtin_reasoner.hpp"
+#include "ussnav/skeleton/polyhedron.hpp"
 
 namespace ussnav {
 namespace {
@@ -116,6 +117,33 @@ RegionPick pickRegionForRequest(const SceneGraph& g, const Instruction& ins, con
   return best;
 }
 
+std::optional<Vec3> portalBetween(const SgNode& a, const SgNode& b, double z) {
+  const ConvexHull ha = convexHull(a.hull), hb = convexHull(b.hull);
+  if (ha.empty() || hb.empty()) return std::nullopt;
+  constexpr double kTouch = 0.2;  // m outside a hull still counts: polyhedra linked as
+                                  // overlapping may only touch (faces a voxel apart)
+  auto inside = [](const ConvexHull& h, const Vec3& p) {
+    for (size_t f = 0; f < h.normals.size(); ++f)
+      if (h.normals[f].dot(p) + h.offsets[f] > kTouch) return false;
+    return true;
+  };
+  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+  Vec3 lo_b = lo, hi_b = hi;
+  for (const Vec3& v : a.hull) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  for (const Vec3& v : b.hull) lo_b = lo_b.cwiseMin(v), hi_b = hi_b.cwiseMax(v);
+  lo = lo.cwiseMax(lo_b) - Vec3::Constant(kTouch), hi = hi.cwiseMin(hi_b) + Vec3::Constant(kTouch);
+  constexpr double kStep = 0.1;
+  if (lo.x() > hi.x() || lo.y() > hi.y() || z < lo.z() || z > hi.z()) return std::nullopt;
+  if ((hi.x() - lo.x()) * (hi.y() - lo.y()) > 400.0) return std::nullopt;  // bounded work: 40,000 samples
+  Vec3 sum = Vec3::Zero();
+  int n = 0;
+  for (double x = lo.x(); x <= hi.x(); x += kStep)
+    for (double y = lo.y(); y <= hi.y(); y += kStep)
+      if (const Vec3 p(x, y, z); inside(ha, p) && inside(hb, p)) sum += p, ++n;
+  if (n == 0) return std::nullopt;
+  return Vec3(sum / n);
+}
+
 std::optional<std::vector<Vec3>> routeOnSceneGraph(const SceneGraph& g, const Vec3& from, const Vec3& to) {
   const int a = nearestNode(g, from), b = nearestNode(g, to);
   if (a < 0 || b < 0) return std::nullopt;
@@ -143,7 +171,22 @@ std::optional<std::vector<Vec3>> routeOnSceneGraph(const SceneGraph& g, const Ve
   }
   if (dist[size_t(b)] >= 1e300) return std::nullopt;
   std::vector<Vec3> path{to};
-  for (int u = b; u >= 0; u = prev[size_t(u)]) path.push_back(g.nodes[size_t(u)].centroid);
+  for (int u = b; u >= 0; u = prev[size_t(u)]) {
+    const SgNode& n = g.nodes[size_t(u)];
+    if (const int v = prev[size_t(u)]; v >= 0) {
+      // Between two overlapping polyhedra, through their overlap when the straight stretch
+      // between the centres passes more than 0.2 m from it (it cuts a door's corner).
+      const SgNode& m = g.nodes[size_t(v)];
+      const Vec3 c = n.centroid, d = m.centroid - c;
+      if (const auto p = portalBetween(n, m, 0.5 * (c.z() + m.centroid.z()))) {
+        const double t = d.squaredNorm() > 0.0 ? std::clamp((*p - c).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+        path.push_back(n.centroid);
+        if ((c + t * d - *p).norm() > 0.2) path.push_back(*p);
+        continue;
+      }
+    }
+    path.push_back(n.centroid);
+  }
   path.push_back(from);
   std::reverse(path.begin(), path.end());
   return path;

@@ -137,6 +137,41 @@ TEST(SceneQueries, RouteFollowsTheGraphThroughTheDoor) {
   EXPECT_FALSE(routeOnSceneGraph(cut, Vec3(2.5, 2.0, 1.2), Vec3(9.0, 1.2, 1.2)).has_value());
 }
 
+TEST(SceneQueries, RoutePassesThroughTheOverlapOfPolyhedraThatMeetThroughADoor) {
+  // test::twoRooms' door: the wall x = 5, door y 1.5..2.5. Two nodes whose centres lie beside
+  // the door (y = 1.0): the straight stretch between them crosses the wall. Their polyhedra
+  // (prisms z 0.3..2.5) reach through the door into each other's room, cutting its corner as
+  // the hull of ray ends does; they meet around the doorway.
+  auto prism = [](std::vector<Vec2> xy) {
+    std::vector<Vec3> v;
+    for (const double z : {0.3, 2.5})
+      for (const Vec2& p : xy) v.emplace_back(p.x(), p.y(), z);
+    return v;
+  };
+  SceneGraph g;
+  SgNode a, b;
+  a.id = 0, a.centroid = Vec3(4.4, 1.0, 1.2);
+  a.hull = prism({{3.0, 0.2}, {4.9, 0.2}, {5.6, 1.6}, {5.6, 2.4}, {3.0, 2.4}});
+  b.id = 1, b.centroid = Vec3(5.6, 1.0, 1.2);
+  b.hull = prism({{7.0, 0.2}, {5.1, 0.2}, {4.4, 1.6}, {4.4, 2.4}, {7.0, 2.4}});
+  g.nodes = {a, b};
+  g.edges.push_back({0, 1, "overlap", 1.0});
+  const auto portal = portalBetween(a, b, 1.2);
+  ASSERT_TRUE(portal.has_value());
+  EXPECT_NEAR(portal->x(), 5.0, 0.05);  // the prisms mirror each other about x = 5
+  EXPECT_GT(portal->y(), 1.5);          // in the doorway
+  EXPECT_LT(portal->y(), 2.5);
+  const auto r = routeOnSceneGraph(g, Vec3(4.0, 1.0, 1.2), Vec3(6.0, 1.0, 1.2));
+  ASSERT_TRUE(r.has_value());
+  ASSERT_EQ(r->size(), 5u);  // from, node 0, the portal, node 1, to
+  EXPECT_TRUE((*r)[2].isApprox(*portal));
+  // Polyhedra that do not meet at that height, and nodes without hulls: no portal.
+  EXPECT_FALSE(portalBetween(a, b, 3.0).has_value());
+  g.nodes[1].hull.clear();
+  EXPECT_FALSE(portalBetween(g.nodes[0], g.nodes[1], 1.2).has_value());
+  EXPECT_EQ(routeOnSceneGraph(g, Vec3(4.0, 1.0, 1.2), Vec3(6.0, 1.0, 1.2))->size(), 4u);
+}
+
 TEST(SceneQueries, AnswersQuestionsFromTheGraph) {
   const auto ask = twoRoomAnswers();
   const std::string here = ask("Describe the current area", Vec3(2.0, 2.0, 1.2));
