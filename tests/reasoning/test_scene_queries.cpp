@@ -165,6 +165,15 @@ TEST(SceneQueries, RoutePassesThroughTheOverlapOfPolyhedraThatMeetThroughADoor) 
   ASSERT_TRUE(r.has_value());
   ASSERT_EQ(r->size(), 5u);  // from, node 0, the portal, node 1, to
   EXPECT_TRUE((*r)[2].isApprox(*portal));
+  // Polyhedra that only touch (boxes 0.1 m apart across the doorway): where they come within
+  // 0.2 m of each other.
+  SgNode c = a, d = b;
+  c.hull = prism({{3.0, 1.5}, {4.95, 1.5}, {4.95, 2.5}, {3.0, 2.5}});
+  d.hull = prism({{5.05, 1.5}, {7.0, 1.5}, {7.0, 2.5}, {5.05, 2.5}});
+  const auto touch = portalBetween(c, d, 1.2);
+  ASSERT_TRUE(touch.has_value());
+  EXPECT_NEAR(touch->x(), 5.0, 0.1);
+  EXPECT_NEAR(touch->y(), 2.0, 0.1);
   // Polyhedra that do not meet at that height, and nodes without hulls: no portal.
   EXPECT_FALSE(portalBetween(a, b, 3.0).has_value());
   g.nodes[1].hull.clear();

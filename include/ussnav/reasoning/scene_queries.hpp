@@ -44,9 +44,9 @@ RegionPick pickRegionForRequest(const SceneGraph& g, const Instruction& ins, con
 
 std::optional<std::vector<Vec3>> routeOnSceneGraph(const SceneGraph& g, const Vec3& from, const Vec3& to);
 
-// The mean of the points at height z, on a 0.1 m lattice, within 0.2 m of both nodes' hulls
-// (polyhedra linked as overlapping may only touch):
-// where two overlapping polyhedra meet. nullopt when they do not meet at that height, a hull is
+// The mean of the points at height z, on a 0.1 m lattice, inside both nodes' hulls (when none
+// is, within 0.2 m of both: polyhedra linked as overlapping may only touch): where two
+// overlapping polyhedra meet. nullopt when they do not meet at that height, a hull is
 // degenerate (or missing), or the hulls' common box exceeds 400 m^2 (bounded work).
 std::optional<Vec3> portalBetween(const SgNode& a, const SgNode& b, double z);
 
