@@ -215,8 +215,7 @@ std::optional<std::vector<Vec3>> FlightLoop::flightPath(const Vec3& a, const Vec
 }
 
 int FlightLoop::rememberObstacle(const Vec3& hit, double margin) {
-  // The voxels whose inflation by `margin` reaches the hit point (within half a voxel diagonal).
-  return blocked_.add(mapper_.grid(), hit, margin + 0.5 * std::sqrt(3.0) * mapper_.grid().resolution());
+  return blocked_.addBlockedAt(mapper_.grid(), hit, margin);
 }
 
 void FlightLoop::refreshSemantics() {

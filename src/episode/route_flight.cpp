@@ -118,7 +118,7 @@ RouteFlight flyRoute(Simulator& sim, const Config& cfg, const Pose& start, const
       if (const auto hit = blockedAt(inflated, uav.remainingPath(), 4.0)) {
         replan = true;
         ++R.blocked;
-        R.remembered_obstacles += blocked.add(mapper.grid(), *hit, margin + 0.5 * std::sqrt(3.0) * mapper.grid().resolution());
+        R.remembered_obstacles += blocked.addBlockedAt(mapper.grid(), *hit, margin);
       }
     }
     if (replan) {

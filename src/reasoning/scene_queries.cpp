@@ -118,29 +118,22 @@ RegionPick pickRegionForRequest(const SceneGraph& g, const Instruction& ins, con
 }
 
 std::optional<Vec3> portalBetween(const SgNode& a, const SgNode& b, double z) {
-  const ConvexHull ha = convexHull(a.hull), hb = convexHull(b.hull);
-  if (ha.empty() || hb.empty()) return std::nullopt;
+  const Polyhedron pa = buildPolyhedron(a.hull, std::vector<VertexKind>(a.hull.size(), VertexKind::Free));
+  const Polyhedron pb = buildPolyhedron(b.hull, std::vector<VertexKind>(b.hull.size(), VertexKind::Free));
+  if (!pa.valid() || !pb.valid()) return std::nullopt;
   // Where they overlap; else, within 0.2 m of both: polyhedra linked as overlapping may only
   // touch (faces a voxel apart).
-  for (const double slack : {0.0, 0.2}) {
-    auto inside = [slack](const ConvexHull& h, const Vec3& p) {
-      for (size_t f = 0; f < h.normals.size(); ++f)
-        if (h.normals[f].dot(p) + h.offsets[f] > slack + 1e-9) return false;
-      return true;
-    };
-    Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
-    Vec3 lo_b = lo, hi_b = hi;
-    for (const Vec3& v : a.hull) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
-    for (const Vec3& v : b.hull) lo_b = lo_b.cwiseMin(v), hi_b = hi_b.cwiseMax(v);
-    lo = lo.cwiseMax(lo_b) - Vec3::Constant(slack), hi = hi.cwiseMin(hi_b) + Vec3::Constant(slack);
-    constexpr double kStep = 0.1;
+  for (const double slack : {1e-9, 0.2}) {
+    const Vec3 lo = pa.bounds.min.cwiseMax(pb.bounds.min) - Vec3::Constant(slack);
+    const Vec3 hi = pa.bounds.max.cwiseMin(pb.bounds.max) + Vec3::Constant(slack);
     if (lo.x() > hi.x() || lo.y() > hi.y() || z < lo.z() || z > hi.z()) continue;
     if ((hi.x() - lo.x()) * (hi.y() - lo.y()) > 400.0) return std::nullopt;  // bounded work: 40,000 samples
+    constexpr double kStep = 0.1;
     Vec3 sum = Vec3::Zero();
     int n = 0;
     for (double x = lo.x(); x <= hi.x(); x += kStep)
       for (double y = lo.y(); y <= hi.y(); y += kStep)
-        if (const Vec3 p(x, y, z); inside(ha, p) && inside(hb, p)) sum += p, ++n;
+        if (const Vec3 p(x, y, z); pa.contains(p, slack) && pb.contains(p, slack)) sum += p, ++n;
     if (n > 0) return Vec3(sum / n);
   }
   return std::nullopt;

@@ -14,6 +14,7 @@
 //    planned after the rolling window has forgotten them.
 // Time is the episode's clock (s). Plain state, no I/O.
 
+#include <cmath>
 #include <deque>
 #include <map>
 #include <set>
@@ -114,6 +115,11 @@ class BlockingObstacles {
   // the path, plus half a voxel diagonal: the hit lies on the inflated voxel's face). Returns how
   // many were new.
   int add(const OccupancyMap& map, const Vec3& hit, double radius);
+  // A path found blocked at `hit` by the map inflated by `margin`: add() with margin plus half a
+  // voxel diagonal.
+  int addBlockedAt(const OccupancyMap& map, const Vec3& hit, double margin) {
+    return add(map, hit, margin + 0.5 * std::sqrt(3.0) * map.resolution());
+  }
   std::vector<Vec3> forgotten(const OccupancyMap& map) const;
   size_t size() const { return voxels_.size(); }
 
