@@ -1,6 +1,8 @@
 // Verbs, acts and adjectives of WordNet (see ussnav/perception/wordnet.hpp): what the
 // instruction reader needs beyond noun senses.
 
+#include <cstring>
+
 #include "ussnav/perception/wordnet.hpp"
 
 #include "wordnet_db.hpp"
@@ -250,6 +252,60 @@ std::vector<std::string> adjectiveGlossesOf(const std::string& word, int senses)
         return out;
       },
       std::vector<std::string>{});
+}
+
+namespace {
+
+// A synset's words as the reader writes them: "played_out" -> "played out", "asleep(p)" -> "asleep".
+std::vector<std::string> synsetWords(const Synset& s) {
+  std::vector<std::string> out;
+  for (int i = 0; i < s.wcount; ++i) {
+    std::string w = s.words[i] ? s.words[i] : "";
+    if (const auto paren = w.find('('); paren != std::string::npos) w.erase(paren);
+    std::replace(w.begin(), w.end(), '_', ' ');
+    if (!w.empty()) out.push_back(lower(w));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::vector<std::string>> adjectiveClustersOf(const std::string& word, int senses) {
+  const std::string w = lower(word);
+  if (w.empty() || w.size() >= WORDBUF - 1 || w.find(' ') != std::string::npos || senses <= 0) return {};
+  return withDb(
+      [&](Db&) -> std::vector<std::vector<std::string>> {
+        std::vector<std::vector<std::string>> out;
+        std::vector<char> buf(w.begin(), w.end());
+        buf.push_back('\0');
+        IndexPtr idx = index_lookup(buf.data(), ADJ);
+        if (!idx)
+          if (char* base = morphstr(buf.data(), ADJ)) {
+            std::vector<char> b(base, base + std::strlen(base) + 1);
+            idx = index_lookup(b.data(), ADJ);
+          }
+        if (!idx) return out;
+        char empty[1] = {0};
+        for (int i = 0; i < std::min(idx->off_cnt, senses); ++i) {
+          SynsetPtr s = read_synset(ADJ, idx->offset[i], empty);
+          if (!s) continue;
+          std::vector<std::string> words = synsetWords(*s);
+          if (s->pos && std::string(s->pos) == "s")
+            for (int k = 0; k < s->ptrcount; ++k)
+              if (s->ptrtyp[k] == SIMPTR) {
+                if (SynsetPtr head = read_synset(ADJ, s->ptroff[k], empty)) {
+                  for (auto& h : synsetWords(*head)) words.push_back(std::move(h));
+                  free_synset(head);
+                }
+                break;
+              }
+          free_synset(s);
+          out.push_back(std::move(words));
+        }
+        free_index(idx);
+        return out;
+      },
+      std::vector<std::vector<std::string>>{});
 }
 
 }  // namespace ussnav::wordnet

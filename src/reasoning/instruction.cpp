@@ -55,6 +55,35 @@ bool namesCategory(const CommonsensePriors& P, const std::string& phrase) {
                      [&](const std::string& c) { return P.encoder().similarity(phrase, c) >= 0.85; });
 }
 
+// How the one asking feels, rewritten as what they ask for (states.tsv): "I'm so tired" ->
+// "I'm to sleep", "my hands are dirty" -> "my hands are to shower or bathe". Only a word that says
+// how someone is: after "I'm", "I feel", "are", "getting", ... and the words of degree between
+// ("a bit", "so"): "keep food cold" and "a cold drink" stay as they are.
+void rewriteStates(std::vector<std::string>& words, const CommonsensePriors& P) {
+  static const std::set<std::string> cues{"i'm", "im", "am", "are", "is", "was", "were", "been", "feel",
+                                          "feels", "feeling", "felt", "get", "gets", "getting", "got",
+                                          "become", "becoming", "i've", "we're", "you're"};
+  static const std::set<std::string> degree{"so",       "very",    "really", "too",    "quite",  "pretty",
+                                            "rather",   "a",       "bit",    "little", "all",    "kind",
+                                            "sort",     "of",      "kinda",  "super",  "totally", "completely",
+                                            "terribly", "awfully", "extremely", "incredibly", "just", "still"};
+  std::vector<std::string> out;
+  for (size_t i = 0; i < words.size(); ++i) {
+    size_t c = i;
+    while (c > 0 && degree.count(words[c - 1]) && !cues.count(words[c - 1])) --c;
+    // A word of degree is no state ("I'm still tired"), so each of them before one stands in out.
+    const bool state = c > 0 && cues.count(words[c - 1]) && !degree.count(words[i]);
+    const std::string request = state ? P.requestForState(words[i]) : std::string();
+    if (request.empty()) {
+      out.push_back(words[i]);
+      continue;
+    }
+    out.resize(out.size() - (i - c));  // "so", "a bit": they said how much, and go with the state
+    for (auto& w : instructionWords(request)) out.push_back(std::move(w));
+  }
+  words = std::move(out);
+}
+
 // Rewrites what the later steps could not read, in place:
 //  - a particle after a verb WordNet knows with it ("lie down", "heat up", "throw away", and after
 //    a light verb: "take out the trash") goes and
@@ -158,6 +187,7 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
       words.erase(words.begin() + long(i), words.begin() + long(i + n));
       break;
     }
+  rewriteStates(words, P);
   rewritePhrasesAndStates(words);
   // Content words, and which of them stand as verbs: a word WordNet knows as a verb after "to",
   // "I", "can", ... ("somewhere to wash", "where can I store food"), or first and followed by

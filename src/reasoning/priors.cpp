@@ -135,6 +135,17 @@ std::shared_ptr<const CommonsensePriors> CommonsensePriors::load(const std::file
     P->adjacency_[size_t(a)][size_t(b)] = P->adjacency_[size_t(b)][size_t(a)] = std::clamp(w, 0.0, 1.0);
   }
 
+  // States and what they stand for.
+  const auto st_path = dir / "states.tsv";
+  const auto st = readTable(st_path, '\t');
+  for (size_t i = 1; i < st.size(); ++i) {
+    if (st[i].size() != 2 || trim(st[i][0]).empty() || trim(st[i][1]).empty())
+      throw InputError(st_path.string(), "row " + std::to_string(i), "expected state, request (two tab-separated words)");
+    std::string state = trim(st[i][0]);
+    std::transform(state.begin(), state.end(), state.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    P->states_[state] = trim(st[i][1]);
+  }
+
   // ProcTHOR placement weights: 0 / 1 / 2 -> likelihood.
   const auto pt_path = dir / "procthor_object_room_weights.tsv";
   const auto pt = readTable(pt_path, '\t');
@@ -269,6 +280,14 @@ int CommonsensePriors::roomIndex(const std::string& name) const {
     if (c >= best_c) best_c = c, best = int(i);
   }
   return best;
+}
+
+std::string CommonsensePriors::requestForState(const std::string& word) const {
+  if (const auto it = states_.find(word); it != states_.end()) return it->second;
+  for (const auto& sense : wordnet::adjectiveClustersOf(word, 2))
+    for (const auto& w : sense)
+      if (const auto it = states_.find(w); it != states_.end()) return it->second;
+  return {};
 }
 
 std::vector<double> CommonsensePriors::roomsGivenObject(const std::string& label) const {

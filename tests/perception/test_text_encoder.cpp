@@ -47,6 +47,26 @@ TEST(WordNet, SynonymsHypernymsAndMorphology) {
   EXPECT_FALSE(wordnet::wuPalmer("zorblax", "chair"));
 }
 
+TEST(WordNet, AdjectiveClusters) {
+  // A satellite's words, then its cluster head's: exhausted is one of the tired cluster.
+  const auto exhausted = wordnet::adjectiveClustersOf("exhausted", 1);
+  ASSERT_EQ(exhausted.size(), 1u);
+  EXPECT_EQ(exhausted[0].front(), "exhausted");
+  EXPECT_TRUE(contains(exhausted[0], "worn out"));  // underscores read as spaces
+  EXPECT_EQ(exhausted[0].back(), "tired");
+  EXPECT_EQ(wordnet::adjectiveClustersOf("drowsy", 1).at(0).back(), "asleep");  // "asleep(p)"
+  // A head is its own cluster; morphology: sleepier -> sleepy.
+  EXPECT_EQ(wordnet::adjectiveClustersOf("tired", 1).at(0), std::vector<std::string>{"tired"});
+  EXPECT_EQ(wordnet::adjectiveClustersOf("sleepier", 1).at(0).front(), "sleepy");
+  // Senses in frequency order: chilly is first unemotional, then cold.
+  const auto chilly = wordnet::adjectiveClustersOf("chilly", 2);
+  ASSERT_EQ(chilly.size(), 2u);
+  EXPECT_FALSE(contains(chilly[0], "cold"));
+  EXPECT_TRUE(contains(chilly[1], "cold"));
+  EXPECT_TRUE(wordnet::adjectiveClustersOf("sofa", 2).empty());
+  EXPECT_TRUE(wordnet::adjectiveClustersOf("", 2).empty());
+}
+
 TEST(WordNet, MultiWordLabels) {
   EXPECT_EQ(wordnet::labelTokens("DiningTable"), (std::vector<std::string>{"dining", "table"}));
   EXPECT_EQ(wordnet::labelTokens("TVStand"), (std::vector<std::string>{"tv", "stand"}));

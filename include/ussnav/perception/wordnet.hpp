@@ -90,6 +90,11 @@ bool furnishes(const std::string& label);
 // morphology): adjectiveGlossesOf("hungry", 2)[0] = "feeling hunger; feeling a need or desire
 // to eat food". Empty when WordNet has no such adjective.
 std::vector<std::string> adjectiveGlossesOf(const std::string& word, int senses);
+// The word's first `senses` adjective senses, most frequent first, each as its synset's words
+// followed, for a satellite, by its cluster head's ("exhausted": exhausted, dog-tired, ...,
+// tired; "drowsy": drowsy, drowsing, dozy, asleep). Adjective morphology applies ("sleepier" ->
+// sleepy); underscores read as spaces, markers such as "(p)" dropped. Empty when none.
+std::vector<std::vector<std::string>> adjectiveClustersOf(const std::string& word, int senses);
 // Lexicographer file of the most frequent sense of the index word lookupNoun() reads the word
 // from: "noun.body" for "hands" (read as "hand", whose usual sense is the body part, though
 // lookupNoun() picks a clock's hand) and "teeth"; "noun.artifact" for "bed". Empty when the

@@ -11,8 +11,9 @@
 //  - MP3D's category_mapping (MIT): 1,659 raw labels annotators gave objects in 90 scanned houses,
 //    each filed under an mpcat40 category ("nightstand" -> chest_of_drawers, "monitor" ->
 //    tv_monitor), consulted when the label names no category itself;
-//  - room_types.tsv (the room types, aliases, which table column means each) and
-//    room_adjacency.tsv (which room types open onto each other), written for this project.
+//  - room_types.tsv (the room types, aliases, which table column means each),
+//    room_adjacency.tsv (which room types open onto each other) and states.tsv (how one feels,
+//    and what one then asks for: tired -> "to sleep"), written for this project.
 // P(room | object label): the label is matched to the categories' names and aliases (spaces
 // aside: "armchair" is ArmChair), else through the MP3D raw-label table, else through a WordNet
 // synonym ("tv" -> tv_monitor by its alias television), else by the text encoder to every
@@ -45,7 +46,7 @@ struct RoomType {
 
 class CommonsensePriors {
  public:
-  // Reads dir/{room_types.tsv, room_adjacency.tsv, procthor_object_room_weights.tsv,
+  // Reads dir/{room_types.tsv, room_adjacency.tsv, states.tsv, procthor_object_room_weights.tsv,
   // sgnav_object_room_cooccurrence.csv, mpcat40.tsv, mp3d_category_mapping.tsv}. Throws InputError
   // naming the file and line/field on a missing file or a malformed row.
   static std::shared_ptr<const CommonsensePriors> load(const std::filesystem::path& dir, std::shared_ptr<const TextEncoder> encoder,
@@ -68,6 +69,10 @@ class CommonsensePriors {
   std::vector<double> roomsGivenObject(const std::string& label) const;
   // Room adjacency prior in [0, 1] (listed pairs, else 0.1).
   double adjacency(int a, int b) const;
+  // What a state of the one asking stands for (states.tsv): the row of the word, else of the first
+  // of its two most frequent WordNet adjective senses whose words or cluster head have one
+  // ("exhausted" -> tired -> "to sleep", "drowsy" -> asleep). "" when none.
+  std::string requestForState(const std::string& word) const;
   // The tables' object categories as words ("ArmChair" -> "arm chair"), for instructions.
   const std::vector<std::string>& categories() const { return categories_; }
   const TextEncoder& encoder() const { return *encoder_; }
@@ -85,7 +90,8 @@ class CommonsensePriors {
   std::vector<std::string> categories_;
   std::shared_ptr<const TextEncoder> encoder_;
   double match_cosine_ = 0.85;
-  std::map<std::string, std::string> mp3d_;  // raw label (lower case) -> a row's category words
+  std::map<std::string, std::string> mp3d_;
+  std::map<std::string, std::string> states_;  // state word -> the request it stands for  // raw label (lower case) -> a row's category words
   mutable std::mutex mutex_;
   mutable std::map<std::string, std::vector<double>> cache_;
 };
