@@ -238,13 +238,15 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
         break;
       }
     }
-  // A light verb and an act ("take a bath", "have a nap") ask for what the act needs, when the
-  // noun names no category itself: the act's WordNet gloss ("you soak and wash your body in a
-  // bathtub") becomes the request (a bath's artifact sense is a laboratory vessel).
+  // A light verb and an act ("take a bath", "have a nap"), or wanting one ("I need a nap", "I
+  // want a drink"), ask for what the act needs, when the noun names no category itself: the act's
+  // WordNet gloss ("you soak and wash your body in a bathtub") becomes the request (a bath's
+  // artifact sense is a laboratory vessel).
   // The noun need not be a thing ("take a nap": a nap is mostly a sleep).
+  static const std::set<std::string> wantVerbs{"need", "needs", "want", "wants", "use"};
   std::vector<std::string> act;
   for (size_t i = 0; i + 1 < words.size() && act.empty(); ++i) {
-    if (!lightVerbs().count(words[i])) continue;
+    if (!lightVerbs().count(words[i]) && !wantVerbs.count(words[i])) continue;
     size_t k = i + 1;
     while (k + 1 < words.size() && (words[k] == "a" || words[k] == "an" || words[k] == "the")) ++k;
     const std::string& noun = words[k];

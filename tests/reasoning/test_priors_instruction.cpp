@@ -331,6 +331,13 @@ TEST(Instruction, ObjectsSeenAreJudgedAgainstAFunctionalRequest) {
   EXPECT_EQ(targets("I want to take a bath"), std::vector<std::string>{"bathtub"});
   EXPECT_EQ(targets("take a nap"), std::vector<std::string>{"bed"});
   EXPECT_EQ(targets("I want to take a shower"), std::vector<std::string>{"shower"});  // a category itself
+  // So does wanting or needing one (session 47): "I need a nap" was the literal "nap", "I want a
+  // drink" the literal "drink"; a thing one wants that is a category stays that thing.
+  EXPECT_EQ(targets("I need a nap"), std::vector<std::string>{"bed"});
+  EXPECT_EQ(targets("I need a bath"), std::vector<std::string>{"bathtub"});
+  EXPECT_EQ(interpretInstruction("I want a drink", P).targets.at(0), "cup");
+  EXPECT_EQ(interpretInstruction("I want a bed", P).how, "named");
+  EXPECT_EQ(targets("I need a towel"), std::vector<std::string>{"towel"});
   EXPECT_FALSE(servesRequest(sit, "toilet paper"));
   // The fridge's own gloss is about its motor; its hypernym's is "white goods in which food can
   // be stored at low temperatures" (was: a bottle, "used for storing drinks").
@@ -592,7 +599,7 @@ TEST(Instruction, JudgedRequestsReadAtLeastAsWellAsBefore) {
     return std::pair{right, total};
   };
   // file, requests in it, floor
-  const std::tuple<const char*, int, int> lists[] = {{"requests_dev.tsv", 44, 34},
+  const std::tuple<const char*, int, int> lists[] = {{"requests_dev.tsv", 44, 35},
                                                      {"requests_heldout.tsv", 38, 23},
                                                      {"requests_fresh.tsv", 30, 18},
                                                      {"requests_fresh2.tsv", 31, 15},
