@@ -242,19 +242,23 @@ std::string answerQuestion(const SceneGraph& g, const std::string& question, con
     if (!by.empty()) out << ".";
     return out.str();
   }
-  // "Where is / is there / find X": objects matching X.
-  if (has({"where", "there", "find", "any", "how"}) && !has({"layout", "rooms", "regions", "am"}) && ins &&
+  // "Where is / is there / find X": objects matching X. A request that is no question ("I'm
+  // tired", "I want to sit down") is answered the same way, with the objects seen that serve it.
+  const bool request = ins && ins->how == "functional" && !has({"what", "which", "describe"});
+  if ((has({"where", "there", "find", "any", "how"}) || request) && !has({"layout", "rooms", "regions", "am"}) && ins &&
       !ins->targets.empty() && ins->how != "literal") {
     int n = 0;
+    const auto matches = [&](const std::string& label) {
+      for (const auto& t : ins->targets)
+        if (priors.encoder().similarity(label, t) >= 0.85) return true;
+      return ins->how == "functional" && servesRequest(*ins, label);
+    };
     for (const RegionSummary& s : summaries)
       for (const auto* list : {&s.objects, &s.beyond})
         for (const ObjectBrief& o : *list)
-          for (const auto& t : ins->targets)
-            if (priors.encoder().similarity(o.label, t) >= 0.85) {
-              out << (n++ ? " " : "") << english::capitalised(english::withArticle(o.label)) << " (object " << o.id << ") is at " << fmt(o.position)
-                  << (list == &s.objects ? " in " : ", seen from ") << regionName(s.id, sem) << ".";
-              break;
-            }
+          if (matches(o.label))
+            out << (n++ ? " " : "") << english::capitalised(english::withArticle(o.label)) << " (object " << o.id << ") is at " << fmt(o.position)
+                << (list == &s.objects ? " in " : ", seen from ") << regionName(s.id, sem) << ".";
     if (n == 0) out << "No " << ins->targets.front() << " has been seen yet.";
     return out.str();
   }

@@ -191,6 +191,14 @@ TEST(SceneQueries, AnswersQuestionsFromTheGraph) {
   EXPECT_NE(where.find("fridge (object 1) is at (0.6, 3.3) in region 0"), std::string::npos) << where;
   const std::string none = ask("Is there a bed?", std::nullopt);
   EXPECT_NE(none.find("No bed"), std::string::npos) << none;
+  // A request that is no question: the objects seen that serve it (session 47; was the layout).
+  const std::string sit = ask("I want to sit down", std::nullopt);
+  EXPECT_NE(sit.find("A chair (object 4) is at (8.0, 3.2) in region 1"), std::string::npos) << sit;
+  EXPECT_EQ(sit.find("fridge"), std::string::npos) << sit;
+  const std::string cook = ask("I need to cook dinner", std::nullopt);  // a stove serves; no target names it
+  EXPECT_NE(cook.find("A stove (object 2)"), std::string::npos) << cook;
+  const std::string tired = ask("I'm tired", std::nullopt);
+  EXPECT_NE(tired.find("No bed has been seen yet"), std::string::npos) << tired;
   const std::string layout = ask("Describe the layout", std::nullopt);
   EXPECT_NE(layout.find("2 regions and 4 objects"), std::string::npos) << layout;
   EXPECT_NE(layout.find("next to region 1 ("), std::string::npos) << layout;  // was "next to 1"
