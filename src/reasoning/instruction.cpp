@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -57,22 +58,39 @@ bool namesCategory(const CommonsensePriors& P, const std::string& phrase) {
 
 // How the one asking feels, rewritten as what they ask for (states.tsv): "I'm so tired" ->
 // "I'm to sleep", "my hands are dirty" -> "my hands are to shower or bathe". Only a word that says
-// how someone is: after "I'm", "I feel", "are", "getting", ... and the words of degree between
-// ("a bit", "so"): "keep food cold" and "a cold drink" stay as they are.
+// how someone is, with the words of degree between ("a bit", "so"): after "I'm", "I feel", ...,
+// or after "is", "are", "getting", ... whose subject is a person ("we are", "I am getting") or
+// someone's ("my hands are"). "keep food cold", "a cold drink" and "a drink that is cold" stay.
 void rewriteStates(std::vector<std::string>& words, const CommonsensePriors& P) {
-  static const std::set<std::string> cues{"i'm", "im", "am", "are", "is", "was", "were", "been", "feel",
-                                          "feels", "feeling", "felt", "get", "gets", "getting", "got",
-                                          "become", "becoming", "i've", "we're", "you're"};
+  static const std::set<std::string> person_cues{"i'm", "im", "am", "feel", "feels", "feeling", "felt",
+                                                 "i've", "we're", "you're", "they're", "he's", "she's"};
+  static const std::set<std::string> copulas{"is", "are", "was", "were", "been", "get",
+                                             "gets", "getting", "got", "become", "becoming"};
+  static const std::set<std::string> persons{"i", "we", "you", "he", "she", "they"};
+  static const std::set<std::string> possessives{"my", "our", "your", "his", "her", "their"};
   static const std::set<std::string> degree{"so",       "very",    "really", "too",    "quite",  "pretty",
                                             "rather",   "a",       "bit",    "little", "all",    "kind",
                                             "sort",     "of",      "kinda",  "super",  "totally", "completely",
                                             "terribly", "awfully", "extremely", "incredibly", "just", "still"};
+  // Whether words[k] is a cue after which a state is someone's; a copula's subject is the word
+  // before it, words of degree aside, or the subject of the copula before ("I am still getting").
+  const std::function<bool(size_t)> cue = [&](size_t k) {
+    if (person_cues.count(words[k])) return true;
+    if (!copulas.count(words[k])) return false;
+    size_t s = k;
+    while (s > 0 && degree.count(words[s - 1])) --s;
+    if (s == 0) return false;
+    const std::string& subject = words[s - 1];
+    if (persons.count(subject) || person_cues.count(subject)) return true;
+    if (copulas.count(subject)) return cue(s - 1);
+    return s >= 2 && possessives.count(words[s - 2]);
+  };
   std::vector<std::string> out;
   for (size_t i = 0; i < words.size(); ++i) {
     size_t c = i;
-    while (c > 0 && degree.count(words[c - 1]) && !cues.count(words[c - 1])) --c;
+    while (c > 0 && degree.count(words[c - 1]) && !cue(c - 1)) --c;
     // A word of degree is no state ("I'm still tired"), so each of them before one stands in out.
-    const bool state = c > 0 && cues.count(words[c - 1]) && !degree.count(words[i]);
+    const bool state = c > 0 && cue(c - 1) && !degree.count(words[i]);
     const std::string request = state ? P.requestForState(words[i]) : std::string();
     if (request.empty()) {
       out.push_back(words[i]);

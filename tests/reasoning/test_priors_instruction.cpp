@@ -643,6 +643,12 @@ TEST(Instruction, HowOneFeelsIsReadAsWhatOneAsksFor) {
   EXPECT_EQ(warm.how, "functional");
   EXPECT_TRUE(contains(warm.request, "warm")) << warm.request.size();
   EXPECT_FALSE(contains(interpretInstruction("a cold drink", P).request, "warm"));
+  // After "is", "are", "getting": only when the subject is a person or someone's.
+  EXPECT_FALSE(contains(interpretInstruction("find a drink that is cold", P).request, "warm"));
+  EXPECT_FALSE(contains(interpretInstruction("the soup is getting cold", P).request, "warm"));
+  EXPECT_TRUE(contains(interpretInstruction("my feet are cold", P).request, "warm"));
+  EXPECT_EQ(first("we are tired"), "bed");
+  EXPECT_EQ(first("I'm still getting tired"), "bed");
 }
 
 TEST(Instruction, UnknownWordsAreKeptLiterallyAndEmptyIsRejected) {
