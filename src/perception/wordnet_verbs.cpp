@@ -33,6 +33,20 @@ std::vector<std::string> verbBasesLocked(const std::string& w) {
   return out;
 }
 
+// The adjective index entry of w (the caller frees it), with `morph` of its base form when w
+// itself is none ("sleepier" -> sleepy); nullptr when none.
+IndexPtr adjectiveIndexLocked(const std::string& w, bool morph) {
+  std::vector<char> buf(w.begin(), w.end());
+  buf.push_back('\0');
+  IndexPtr idx = index_lookup(buf.data(), ADJ);
+  if (!idx && morph)
+    if (char* base = morphstr(buf.data(), ADJ)) {
+      std::vector<char> b(base, base + std::strlen(base) + 1);
+      idx = index_lookup(b.data(), ADJ);
+    }
+  return idx;
+}
+
 }  // namespace
 
 bool knownAsVerb(const std::string& word) {
@@ -238,9 +252,7 @@ std::vector<std::string> adjectiveGlossesOf(const std::string& word, int senses)
   return withDb(
       [&](Db&) -> std::vector<std::string> {
         std::vector<std::string> out;
-        std::vector<char> buf(w.begin(), w.end());
-        buf.push_back('\0');
-        IndexPtr idx = index_lookup(buf.data(), ADJ);
+        IndexPtr idx = adjectiveIndexLocked(w, false);
         if (!idx) return out;
         char empty[1] = {0};
         for (int i = 0; i < std::min(idx->off_cnt, senses); ++i)
@@ -276,14 +288,7 @@ std::vector<std::vector<std::string>> adjectiveClustersOf(const std::string& wor
   return withDb(
       [&](Db&) -> std::vector<std::vector<std::string>> {
         std::vector<std::vector<std::string>> out;
-        std::vector<char> buf(w.begin(), w.end());
-        buf.push_back('\0');
-        IndexPtr idx = index_lookup(buf.data(), ADJ);
-        if (!idx)
-          if (char* base = morphstr(buf.data(), ADJ)) {
-            std::vector<char> b(base, base + std::strlen(base) + 1);
-            idx = index_lookup(b.data(), ADJ);
-          }
+        IndexPtr idx = adjectiveIndexLocked(w, true);
         if (!idx) return out;
         char empty[1] = {0};
         for (int i = 0; i < std::min(idx->off_cnt, senses); ++i) {

@@ -141,9 +141,7 @@ std::shared_ptr<const CommonsensePriors> CommonsensePriors::load(const std::file
   for (size_t i = 1; i < st.size(); ++i) {
     if (st[i].size() != 2 || trim(st[i][0]).empty() || trim(st[i][1]).empty())
       throw InputError(st_path.string(), "row " + std::to_string(i), "expected state, request (two tab-separated words)");
-    std::string state = trim(st[i][0]);
-    std::transform(state.begin(), state.end(), state.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    P->states_[state] = trim(st[i][1]);
+    P->states_[lower(trim(st[i][0]))] = trim(st[i][1]);
   }
 
   // ProcTHOR placement weights: 0 / 1 / 2 -> likelihood.

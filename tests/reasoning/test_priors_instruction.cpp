@@ -32,6 +32,12 @@ bool contains(const std::vector<std::string>& v, const std::string& x) {
   return std::find(v.begin(), v.end(), x) != v.end();
 }
 
+// The first target the instruction reader gives for text ("" when none).
+std::string first(const char* text) {
+  const Instruction I = interpretInstruction(text, *priors());
+  return I.targets.empty() ? std::string() : I.targets.front();
+}
+
 }  // namespace
 
 TEST(Priors, CategoryWordsSplitsTableNames) {
@@ -413,10 +419,6 @@ TEST(Instruction, APlaceForAnActOnAnObjectIsJudgedByTheActAndTheObject) {
 
 TEST(Instruction, VerbsAdjectivesAndPhrasalVerbsAreReadThroughWordNet) {
   const auto& P = *priors();
-  const auto first = [&](const char* text) {
-    const Instruction I = interpretInstruction(text, P);
-    return I.targets.empty() ? std::string() : I.targets.front();
-  };
   // To sleep is to rest, to rest is to lie (verb hypernyms): a bed, "a place to sleep", serves
   // lying down and napping (to nap is to sleep). Was: a laundry hamper (a hamper is a shackle
   // "used to tie down") and the literal "nap".
@@ -613,10 +615,6 @@ TEST(Instruction, JudgedRequestsReadAtLeastAsWellAsBefore) {
 
 TEST(Instruction, HowOneFeelsIsReadAsWhatOneAsksFor) {
   const auto& P = *priors();
-  const auto first = [&](const char* text) {
-    const Instruction I = interpretInstruction(text, P);
-    return I.targets.empty() ? std::string() : I.targets.front();
-  };
   // states.tsv: tired -> "to sleep". Was: the literal "tired", and "fall" for "sleepy" (its
   // definition, "ready to fall asleep").
   EXPECT_EQ(first("I'm tired"), "bed");

@@ -90,8 +90,8 @@ class CommonsensePriors {
   std::vector<std::string> categories_;
   std::shared_ptr<const TextEncoder> encoder_;
   double match_cosine_ = 0.85;
-  std::map<std::string, std::string> mp3d_;
-  std::map<std::string, std::string> states_;  // state word -> the request it stands for  // raw label (lower case) -> a row's category words
+  std::map<std::string, std::string> mp3d_;    // raw label (lower case) -> a row's category words
+  std::map<std::string, std::string> states_;  // state word (lower case) -> the request it stands for
   mutable std::mutex mutex_;
   mutable std::map<std::string, std::vector<double>> cache_;
 };
