@@ -605,7 +605,8 @@ TEST(Instruction, JudgedRequestsReadAtLeastAsWellAsBefore) {
                                                      {"requests_heldout.tsv", 38, 23},
                                                      {"requests_fresh.tsv", 30, 18},
                                                      {"requests_fresh2.tsv", 31, 15},
-                                                     {"requests_states.tsv", 20, 15}};
+                                                     {"requests_states.tsv", 20, 15},
+                                                     {"requests_parts.tsv", 18, 5}};
   for (const auto& [file, count, floor] : lists) {
     const auto [right, total] = judge(file);
     EXPECT_EQ(total, count) << file;
