@@ -57,10 +57,13 @@ bool namesCategory(const CommonsensePriors& P, const std::string& phrase) {
 }
 
 // How the one asking feels, rewritten as what they ask for (states.tsv): "I'm so tired" ->
-// "I'm to sleep", "my hands are dirty" -> "my hands are to shower or bathe". Only a word that says
-// how someone is, with the words of degree between ("a bit", "so"): after "I'm", "I feel", ...,
-// or after "is", "are", "getting", ... whose subject is a person ("we are", "I am getting") or
-// someone's ("my hands are"). "keep food cold", "a cold drink" and "a drink that is cold" stay.
+// "I'm to sleep". Only a word that says how someone or something is, with the words of degree
+// between ("a bit", "so"): after "I'm", "I feel", ..., or after "is", "are", "getting", ... whose
+// subject is a person or an animal ("we are", "I am getting", "my son is") or a thing someone has or names
+// ("my hands are", "the dishes are"). A thing in a state whose row has an act is what the act is
+// done to: "my hands are dirty" -> "to wash my hands", "the soup is getting cold" -> "to warm the
+// soup"; without one, a thing of someone's stands for them ("my feet are tired" -> "to sleep").
+// "keep food cold", "a cold drink" and "a drink that is cold" stay.
 void rewriteStates(std::vector<std::string>& words, const CommonsensePriors& P) {
   static const std::set<std::string> person_cues{"i'm", "im", "am", "feel", "feels", "feeling", "felt",
                                                  "i've", "we're", "you're", "they're", "he's", "she's"};
@@ -72,32 +75,49 @@ void rewriteStates(std::vector<std::string>& words, const CommonsensePriors& P) 
                                             "rather",   "a",       "bit",    "little", "all",    "kind",
                                             "sort",     "of",      "kinda",  "super",  "totally", "completely",
                                             "terribly", "awfully", "extremely", "incredibly", "just", "still"};
-  // Whether words[k] is a cue after which a state is someone's; a copula's subject is the word
-  // before it, words of degree aside, or the subject of the copula before ("I am still getting").
-  const std::function<bool(size_t)> cue = [&](size_t k) {
-    if (person_cues.count(words[k])) return true;
-    if (!copulas.count(words[k])) return false;
+  // Whose state follows words[k]: a person's, a thing's (words[from] its determiner, the noun
+  // next), or nobody's. A copula's subject is the word before it, words of degree aside, or the
+  // subject of the copula before ("I am still getting", "my coffee is getting").
+  struct Whose {
+    enum { nobody, person, thing } kind = nobody;
+    size_t from = 0;
+  };
+  const std::function<Whose(size_t)> whose = [&](size_t k) -> Whose {
+    if (person_cues.count(words[k])) return {Whose::person};
+    if (!copulas.count(words[k])) return {};
     size_t s = k;
     while (s > 0 && degree.count(words[s - 1])) --s;
-    if (s == 0) return false;
+    if (s == 0) return {};
     const std::string& subject = words[s - 1];
-    if (persons.count(subject) || person_cues.count(subject)) return true;
-    if (copulas.count(subject)) return cue(s - 1);
-    return s >= 2 && possessives.count(words[s - 2]);
+    if (persons.count(subject) || person_cues.count(subject)) return {Whose::person};
+    if (copulas.count(subject)) return whose(s - 1);
+    if (s < 2 || !(possessives.count(words[s - 2]) || words[s - 2] == "the")) return {};
+    // A person or an animal is in the state as the one asking would be ("my dog is dirty": a bath).
+    if (const std::string lf = wordnet::usualNounLexfile(subject); lf == "noun.person" || lf == "noun.animal")
+      return {Whose::person};
+    return {Whose::thing, s - 2};
   };
   std::vector<std::string> out;
   for (size_t i = 0; i < words.size(); ++i) {
     size_t c = i;
-    while (c > 0 && degree.count(words[c - 1]) && !cue(c - 1)) --c;
+    while (c > 0 && degree.count(words[c - 1]) && whose(c - 1).kind == Whose::nobody) --c;
     // A word of degree is no state ("I'm still tired"), so each of them before one stands in out.
-    const bool state = c > 0 && cue(c - 1) && !degree.count(words[i]);
-    const std::string request = state ? P.requestForState(words[i]) : std::string();
+    const Whose w = c > 0 && !degree.count(words[i]) ? whose(c - 1) : Whose{};
+    const std::string act = w.kind == Whose::thing ? P.actForState(words[i]) : std::string();
+    if (!act.empty()) {
+      // The words from the determiner on were copied one for one (none of them is a state).
+      out.resize(out.size() - (i - w.from));
+      for (const std::string& x : {std::string("to"), act, words[w.from], words[w.from + 1]}) out.push_back(x);
+      continue;
+    }
+    const bool someones = w.kind == Whose::person || (w.kind == Whose::thing && possessives.count(words[w.from]));
+    const std::string request = someones ? P.requestForState(words[i]) : std::string();
     if (request.empty()) {
       out.push_back(words[i]);
       continue;
     }
     out.resize(out.size() - (i - c));  // "so", "a bit": they said how much, and go with the state
-    for (auto& w : instructionWords(request)) out.push_back(std::move(w));
+    for (auto& x : instructionWords(request)) out.push_back(std::move(x));
   }
   words = std::move(out);
 }
@@ -433,7 +453,9 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   }
   if (keep_named && !I.targets.empty() && std::find(I.targets.begin(), I.targets.end(), named) == I.targets.end())
     I.targets.push_back(named);
-  I.act_required = act_on_other;
+  // An act on the requester's body is answered only by what does the act: a hair dryer is
+  // "hand-held", but washes no hands.
+  I.act_required = act_on_other || (act_verb && std::any_of(content.begin(), content.end(), bodyPart));
   if (act_on_other) I.object_named = false;  // answered by the act, whatever it is on
   if (!I.targets.empty()) {
     I.how = "functional";

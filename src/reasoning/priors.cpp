@@ -139,9 +139,11 @@ std::shared_ptr<const CommonsensePriors> CommonsensePriors::load(const std::file
   const auto st_path = dir / "states.tsv";
   const auto st = readTable(st_path, '\t');
   for (size_t i = 1; i < st.size(); ++i) {
-    if (st[i].size() != 2 || trim(st[i][0]).empty() || trim(st[i][1]).empty())
-      throw InputError(st_path.string(), "row " + std::to_string(i), "expected state, request (two tab-separated words)");
-    P->states_[lower(trim(st[i][0]))] = trim(st[i][1]);
+    if (st[i].size() != 3 || trim(st[i][0]).empty() || trim(st[i][1]).empty() || trim(st[i][2]).empty())
+      throw InputError(st_path.string(), "row " + std::to_string(i),
+                       "expected state, request, act (three tab-separated fields; act '-' for none)");
+    const std::string act = trim(st[i][2]);
+    P->states_[lower(trim(st[i][0]))] = {trim(st[i][1]), act == "-" ? std::string() : lower(act)};
   }
 
   // ProcTHOR placement weights: 0 / 1 / 2 -> likelihood.
@@ -280,12 +282,22 @@ int CommonsensePriors::roomIndex(const std::string& name) const {
   return best;
 }
 
-std::string CommonsensePriors::requestForState(const std::string& word) const {
-  if (const auto it = states_.find(word); it != states_.end()) return it->second;
+const CommonsensePriors::StateRow* CommonsensePriors::stateRow(const std::string& word) const {
+  if (const auto it = states_.find(word); it != states_.end()) return &it->second;
   for (const auto& sense : wordnet::adjectiveClustersOf(word, 2))
     for (const auto& w : sense)
-      if (const auto it = states_.find(w); it != states_.end()) return it->second;
-  return {};
+      if (const auto it = states_.find(w); it != states_.end()) return &it->second;
+  return nullptr;
+}
+
+std::string CommonsensePriors::requestForState(const std::string& word) const {
+  const StateRow* row = stateRow(word);
+  return row ? row->request : std::string();
+}
+
+std::string CommonsensePriors::actForState(const std::string& word) const {
+  const StateRow* row = stateRow(word);
+  return row ? row->act : std::string();
 }
 
 std::vector<double> CommonsensePriors::roomsGivenObject(const std::string& label) const {

@@ -49,8 +49,9 @@ struct Instruction {
   double score = 0.0;
   // The request names what the act is on ("store clothes"): a label serves only if it answers that.
   bool object_named = false;
-  // What the act is on is no category ("cook dinner", "clean the floor"): a label serves only if
-  // it answers the act (a pan, a vacuum cleaner; not a floor lamp).
+  // What the act is on is no category ("cook dinner", "clean the floor") or is the requester's
+  // body ("wash my hands"): a label serves only if it answers the act (a pan, a vacuum cleaner;
+  // not a floor lamp, nor a "hand-held" hair dryer).
   bool act_required = false;
 };
 

@@ -73,6 +73,10 @@ class CommonsensePriors {
   // of its two most frequent WordNet adjective senses whose words or cluster head have one
   // ("exhausted" -> tired -> "to sleep", "drowsy" -> asleep). "" when none.
   std::string requestForState(const std::string& word) const;
+  // What is done to a thing or a part of the body in that state (states.tsv's act, found as
+  // above): dirty -> "wash" ("my hands are dirty": to wash my hands), wet -> "dry". "" when the
+  // state calls for nothing done to a thing (tired, hungry) or is not listed.
+  std::string actForState(const std::string& word) const;
   // The tables' object categories as words ("ArmChair" -> "arm chair"), for instructions.
   const std::vector<std::string>& categories() const { return categories_; }
   const TextEncoder& encoder() const { return *encoder_; }
@@ -91,7 +95,12 @@ class CommonsensePriors {
   std::shared_ptr<const TextEncoder> encoder_;
   double match_cosine_ = 0.85;
   std::map<std::string, std::string> mp3d_;    // raw label (lower case) -> a row's category words
-  std::map<std::string, std::string> states_;  // state word (lower case) -> the request it stands for
+  struct StateRow {
+    std::string request;  // what the state of the one asking stands for ("to sleep")
+    std::string act;      // the verb for a thing in that state ("wash"), or ""
+  };
+  const StateRow* stateRow(const std::string& word) const;
+  std::map<std::string, StateRow> states_;  // state word (lower case) -> its row
   mutable std::mutex mutex_;
   mutable std::map<std::string, std::vector<double>> cache_;
 };
