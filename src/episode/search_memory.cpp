@@ -33,23 +33,27 @@ const Vec3* TargetMemory::lookedFrom(const Vec3& c) const {
   return nullptr;
 }
 
-bool ObjectTries::skipped(int id, double t) const {
+bool ObjectTries::skipped(int id, double t, double distance) const {
   const auto it = retry_at_.find(id);
-  return it != retry_at_.end() && it->second > t;
+  if (it == retry_at_.end() || it->second <= t) return false;
+  const auto near = near_radius_.find(id);
+  return near == near_radius_.end() || distance > near->second;
 }
 
 void ObjectTries::fail(int id, double t, double retry_s, bool sighting) {
   if (sighting) return sightingFailed(id);
   retry_at_[id] = ++failures_[id] >= kMaxObjectTries ? kForGood : t + retry_s;
+  near_radius_.erase(id);
 }
 
-void ObjectTries::failFromAfar(int id, double t, double retry_s, bool near, bool sighting) {
+void ObjectTries::failFromAfar(int id, double t, double retry_s, bool near, bool sighting, double near_radius) {
   if (sighting) return sightingFailed(id);
   if (near || ++far_failures_[id] > kMaxFarTries) {
     fail(id, t, retry_s);
   } else {
     retry_at_[id] = t + retry_s;
     transits_[id] = std::min(transits_[id], kMaxTransits - 1);
+    if (near_radius > 0.0) near_radius_[id] = near_radius;
   }
 }
 

@@ -99,6 +99,21 @@ TEST(ObjectTries, FailuresFromAfarCountOnlyAfterManyAndAllowOneMoreTransit) {
   EXPECT_TRUE(o.skipped(6, 1e9));
 }
 
+TEST(ObjectTries, AWaitFromAfarEndsWhenTheUavComesNear) {
+  ObjectTries o;
+  o.failFromAfar(7, 0.0, 20.0, false, false, 3.0);
+  EXPECT_TRUE(o.skipped(7, 5.0));        // no distance given: the whole wait
+  EXPECT_TRUE(o.skipped(7, 5.0, 4.0));   // still beyond the radius
+  EXPECT_FALSE(o.skipped(7, 5.0, 2.5));  // within it: the map around it is there now
+  // Failing again from near is a failure, and waits the whole time whatever the distance.
+  o.failFromAfar(7, 6.0, 20.0, true, false, 3.0);
+  EXPECT_TRUE(o.skipped(7, 10.0, 0.5));
+  EXPECT_FALSE(o.skipped(7, 26.0, 0.5));
+  // Without a radius a wait from afar is the whole wait, as before.
+  o.failFromAfar(8, 0.0, 20.0, false);
+  EXPECT_TRUE(o.skipped(8, 5.0, 0.1));
+}
+
 TEST(ObjectTries, SpotsLookedFromInVainAreKeptPerObject) {
   ObjectTries o;
   EXPECT_FALSE(o.lookedInVainFrom(4, Vec3(1, 1, 1.2)));

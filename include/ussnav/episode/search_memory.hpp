@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <map>
 #include <set>
 #include <tuple>
@@ -58,16 +59,18 @@ class ObjectTries {
  public:
   static constexpr int kMaxObjectTries = 3, kMaxTransits = 2, kMaxFarTries = 10, kMaxTransitReplans = 5;
 
-  // Whether object `id` is skipped at time t.
-  bool skipped(int id, double t) const;
+  // Whether object `id` is skipped at time t, the UAV `distance` from it in the plane: a wait
+  // that began from afar (failFromAfar) ends early once the UAV is within its `near_radius`, as
+  // the map around the object, which was what was missing, is then there.
+  bool skipped(int id, double t, double distance = std::numeric_limits<double>::infinity()) const;
   // An approach failed (reached and not in view, or dropped on the way): skipped for retry_s,
   // the kMaxObjectTries-th time for good; for a `sighting`, only sightingFailed(id).
   void fail(int id, double t, double retry_s, bool sighting = false);
   // No approach pose and no transit: from within the transit radius (`near`) a failure as above;
   // from afar (the map around the object is what is missing) skipped for retry_s with one more
   // transit allowed, and only the kMaxFarTries-th such failure counts as a failure. For a
-  // `sighting`, only sightingFailed(id).
-  void failFromAfar(int id, double t, double retry_s, bool near, bool sighting = false);
+  // `sighting`, only sightingFailed(id). A wait from afar ends early within `near_radius` (0: never).
+  void failFromAfar(int id, double t, double retry_s, bool near, bool sighting = false, double near_radius = 0.0);
   bool mayTransit(int id) const;
   void countTransit(int id) { ++transits_[id]; }
   // A transit cut short by a blocked path: no try of the object (up to kMaxTransitReplans times).
@@ -93,6 +96,7 @@ class ObjectTries {
 
  private:
   std::map<int, double> retry_at_;  // id -> time it may be tried again (1e18: never)
+  std::map<int, double> near_radius_;  // id -> the distance within which a wait from afar ends
   std::map<int, int> failures_, transits_, transit_replans_, far_failures_;
   std::set<int> sightings_failed_;
   std::map<int, std::vector<Vec3>> no_pose_from_, no_view_from_;
