@@ -165,7 +165,8 @@ void FlightLoop::chooseObject() {
   // stands against, and three transits there dropped it): the next one goes elsewhere.
   if (near) tries_.noPoseFrom(best->id, uav_.pose().position);
   // Failed from afar, it is tried again as soon as the UAV comes within the transit radius
-  // (apartment-72 "bed": seen through the hallway at 5 m, flown past at 2.5 m while waiting).
+  // (apartment-72 "bed", session 48: seen through the hallway's door 5 m away, it waited the
+  // whole 20 s while the UAV explored the room it stands in, within 1 m of it).
   tries_.failFromAfar(best->id, t_, ep_.blacklist_s, near, isSighting(best->id), ep_.transit_radius);
   if (debug_)
     std::fprintf(stderr, "[t=%.1f] object %d (%s) at (%.2f %.2f %.2f): no approach (%zu poses, uav %.2f %.2f%s)\n", t_,

@@ -59,8 +59,8 @@ bool namesCategory(const CommonsensePriors& P, const std::string& phrase) {
 // How the one asking feels, rewritten as what they ask for (states.tsv): "I'm so tired" ->
 // "I'm to sleep". Only a word that says how someone or something is, with the words of degree
 // between ("a bit", "so"): after "I'm", "I feel", ..., or after "is", "are", "getting", ... whose
-// subject is a person or an animal ("we are", "I am getting", "my son is") or a thing someone has or names
-// ("my hands are", "the dishes are"). A thing in a state whose row has an act is what the act is
+// subject is a person or an animal ("we are", "I am getting", "my son is") or a thing someone
+// has or names ("my hands are", "the dishes are"). A thing in a state whose row has an act is what the act is
 // done to: "my hands are dirty" -> "to wash my hands", "the soup is getting cold" -> "to warm the
 // soup"; without one, a thing of someone's stands for them ("my feet are tired" -> "to sleep").
 // "keep food cold", "a cold drink" and "a drink that is cold" stay.
@@ -103,21 +103,20 @@ void rewriteStates(std::vector<std::string>& words, const CommonsensePriors& P) 
     while (c > 0 && degree.count(words[c - 1]) && whose(c - 1).kind == Whose::nobody) --c;
     // A word of degree is no state ("I'm still tired"), so each of them before one stands in out.
     const Whose w = c > 0 && !degree.count(words[i]) ? whose(c - 1) : Whose{};
-    const std::string act = w.kind == Whose::thing ? P.actForState(words[i]) : std::string();
-    if (!act.empty()) {
+    const CommonsensePriors::StateRow* row = w.kind == Whose::nobody ? nullptr : P.stateFor(words[i]);
+    if (row && w.kind == Whose::thing && !row->act.empty()) {
       // The words from the determiner on were copied one for one (none of them is a state).
       out.resize(out.size() - (i - w.from));
-      for (const std::string& x : {std::string("to"), act, words[w.from], words[w.from + 1]}) out.push_back(x);
+      for (const std::string& x : {std::string("to"), row->act, words[w.from], words[w.from + 1]}) out.push_back(x);
       continue;
     }
     const bool someones = w.kind == Whose::person || (w.kind == Whose::thing && possessives.count(words[w.from]));
-    const std::string request = someones ? P.requestForState(words[i]) : std::string();
-    if (request.empty()) {
+    if (!row || !someones) {
       out.push_back(words[i]);
       continue;
     }
     out.resize(out.size() - (i - c));  // "so", "a bit": they said how much, and go with the state
-    for (auto& x : instructionWords(request)) out.push_back(std::move(x));
+    for (auto& x : instructionWords(row->request)) out.push_back(std::move(x));
   }
   words = std::move(out);
 }

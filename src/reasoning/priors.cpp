@@ -282,22 +282,12 @@ int CommonsensePriors::roomIndex(const std::string& name) const {
   return best;
 }
 
-const CommonsensePriors::StateRow* CommonsensePriors::stateRow(const std::string& word) const {
+const CommonsensePriors::StateRow* CommonsensePriors::stateFor(const std::string& word) const {
   if (const auto it = states_.find(word); it != states_.end()) return &it->second;
   for (const auto& sense : wordnet::adjectiveClustersOf(word, 2))
     for (const auto& w : sense)
       if (const auto it = states_.find(w); it != states_.end()) return &it->second;
   return nullptr;
-}
-
-std::string CommonsensePriors::requestForState(const std::string& word) const {
-  const StateRow* row = stateRow(word);
-  return row ? row->request : std::string();
-}
-
-std::string CommonsensePriors::actForState(const std::string& word) const {
-  const StateRow* row = stateRow(word);
-  return row ? row->act : std::string();
 }
 
 std::vector<double> CommonsensePriors::roomsGivenObject(const std::string& label) const {

@@ -614,6 +614,16 @@ TEST(Instruction, JudgedRequestsReadAtLeastAsWellAsBefore) {
   }
 }
 
+// A state's row in states.tsv, as words ("" when it has none).
+static std::string request(const CommonsensePriors& P, const std::string& state) {
+  const auto* row = P.stateFor(state);
+  return row ? row->request : std::string();
+}
+static std::string act(const CommonsensePriors& P, const std::string& state) {
+  const auto* row = P.stateFor(state);
+  return row ? row->act : std::string();
+}
+
 TEST(Instruction, HowOneFeelsIsReadAsWhatOneAsksFor) {
   const auto& P = *priors();
   // states.tsv: tired -> "to sleep". Was: the literal "tired", and "fall" for "sleepy" (its
@@ -623,8 +633,8 @@ TEST(Instruction, HowOneFeelsIsReadAsWhatOneAsksFor) {
   EXPECT_EQ(first("I'm bored"), "tv monitor");
   // A word the table lacks takes its WordNet cluster's row: exhausted and weary are tired,
   // drowsy is asleep, filthy is dirty ("to shower or bathe": a shower, and a bathtub serves).
-  EXPECT_EQ(P.requestForState("exhausted"), "to sleep");
-  EXPECT_EQ(P.requestForState("drowsy"), "to sleep");
+  EXPECT_EQ(request(P, "exhausted"), "to sleep");
+  EXPECT_EQ(request(P, "drowsy"), "to sleep");
   EXPECT_EQ(first("I'm weary"), "bed");
   const Instruction filthy = interpretInstruction("I'm filthy", P);
   EXPECT_EQ(filthy.targets.front(), "shower");
@@ -632,9 +642,9 @@ TEST(Instruction, HowOneFeelsIsReadAsWhatOneAsksFor) {
   EXPECT_FALSE(servesRequest(filthy, "sink"));
   EXPECT_EQ(first("I'm so very tired"), "bed");  // the words of degree go with the state
   // Through the second sense when the first says nothing: chilly is first unemotional, then cold.
-  EXPECT_EQ(P.requestForState("chilly"), "to warm");
-  EXPECT_EQ(P.requestForState("bed"), "");
-  EXPECT_EQ(P.requestForState("happy"), "");
+  EXPECT_EQ(request(P, "chilly"), "to warm");
+  EXPECT_EQ(request(P, "bed"), "");
+  EXPECT_EQ(request(P, "happy"), "");
   // Only a word that says how someone is: food kept cold is no one feeling cold.
   EXPECT_EQ(first("keep food cold"), "fridge");
   EXPECT_EQ(first("I need to keep food cold"), "fridge");
@@ -652,9 +662,9 @@ TEST(Instruction, HowOneFeelsIsReadAsWhatOneAsksFor) {
 TEST(Instruction, AThingInAStateIsWhatTheStatesActIsDoneTo) {
   const auto& P = *priors();
   // states.tsv's act: dirty -> wash, wet -> dry. Was: "my hands are to shower or bathe" (a bathtub).
-  EXPECT_EQ(P.actForState("dirty"), "wash");
-  EXPECT_EQ(P.actForState("filthy"), "wash");  // through dirty's cluster
-  EXPECT_EQ(P.actForState("tired"), "");
+  EXPECT_EQ(act(P, "dirty"), "wash");
+  EXPECT_EQ(act(P, "filthy"), "wash");  // through dirty's cluster
+  EXPECT_EQ(act(P, "tired"), "");
   EXPECT_EQ(first("my hands are dirty"), "sink");
   EXPECT_EQ(first("my clothes are really dirty"), "washing machine");
   EXPECT_EQ(first("my hair is wet"), "hair dryer");

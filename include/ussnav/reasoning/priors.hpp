@@ -69,14 +69,16 @@ class CommonsensePriors {
   std::vector<double> roomsGivenObject(const std::string& label) const;
   // Room adjacency prior in [0, 1] (listed pairs, else 0.1).
   double adjacency(int a, int b) const;
-  // What a state of the one asking stands for (states.tsv): the row of the word, else of the first
-  // of its two most frequent WordNet adjective senses whose words or cluster head have one
-  // ("exhausted" -> tired -> "to sleep", "drowsy" -> asleep). "" when none.
-  std::string requestForState(const std::string& word) const;
-  // What is done to a thing or a part of the body in that state (states.tsv's act, found as
-  // above): dirty -> "wash" ("my hands are dirty": to wash my hands), wet -> "dry". "" when the
-  // state calls for nothing done to a thing (tired, hungry) or is not listed.
-  std::string actForState(const std::string& word) const;
+  // A state's row in states.tsv, of the word itself, else of the first of its two most frequent
+  // WordNet adjective senses whose words or cluster head have one ("exhausted" -> tired,
+  // "drowsy" -> asleep, "filthy" -> dirty): what it stands for said of the one asking ("to
+  // sleep"), and the act done to a thing or a part of the body in it ("wash"; "" when the state
+  // calls for none: tired, hungry). nullptr when the word has no row.
+  struct StateRow {
+    std::string request;
+    std::string act;
+  };
+  const StateRow* stateFor(const std::string& word) const;
   // The tables' object categories as words ("ArmChair" -> "arm chair"), for instructions.
   const std::vector<std::string>& categories() const { return categories_; }
   const TextEncoder& encoder() const { return *encoder_; }
@@ -95,11 +97,6 @@ class CommonsensePriors {
   std::shared_ptr<const TextEncoder> encoder_;
   double match_cosine_ = 0.85;
   std::map<std::string, std::string> mp3d_;    // raw label (lower case) -> a row's category words
-  struct StateRow {
-    std::string request;  // what the state of the one asking stands for ("to sleep")
-    std::string act;      // the verb for a thing in that state ("wash"), or ""
-  };
-  const StateRow* stateRow(const std::string& word) const;
   std::map<std::string, StateRow> states_;  // state word (lower case) -> its row
   mutable std::mutex mutex_;
   mutable std::map<std::string, std::vector<double>> cache_;
