@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "ussnav/core/error.hpp"
+#include "ussnav/episode/beyond_objects.hpp"
 #include "ussnav/episode/episode_debug.hpp"
 #include "ussnav/episode/episode_drawing.hpp"
 #include "ussnav/eval/metrics.hpp"
@@ -226,7 +227,14 @@ void FlightLoop::refreshSemantics() {
   summaries_ = summarizeRegions(snapshot_);
   labeler_->offer(summaries_, t_);
   if (oracle_) oracle_->setScene(summaries_);
-  if (decider_) decider_->setScene(summaries_, labeler_->semantics());
+  if (decider_) {
+    auto scene = summaries_;
+    if (cfg_.reasoning.beyond_via_frontier) {
+      const int moved = facingFrontierRegions(scene, targets_, mapper_.grid());
+      if (debug_ && moved > 0) std::fprintf(stderr, "[t=%.1f] %d objects seen beyond: to the region facing them\n", t_, moved);
+    }
+    decider_->setScene(std::move(scene), labeler_->semantics());
+  }
   times_.add("semantics", sw.ms());
 }
 

@@ -425,6 +425,9 @@ struct ReasoningConfig {
   // ... and at least this much higher (chances near the floor differ by noise: 0.09 against
   // 0.06 for a bed in two regions with nothing of a bedroom in sight); 0 = the ratio alone
   double min_chance_gap = 0.1;
+  // An object seen beyond a region counts for the region of the frontier facing it through
+  // space seen free (episode/beyond_objects.hpp), not for the region it was seen from.
+  bool beyond_via_frontier = true;
   LlmConfig llm;
   template <class V> void visit(V& v) {
     v.choice("reasoner", reasoner, {"builtin", "llm", "oracle", "oracle-labels"});
@@ -434,6 +437,7 @@ struct ReasoningConfig {
     v.field("decision_min_interval_s", decision_min_interval_s, 0.0, 1e4, "s");
     v.field("min_chance_ratio", min_chance_ratio, 0.0, 100.0, "x");
     v.field("min_chance_gap", min_chance_gap, 0.0, 1.0, "chance");
+    v.field("beyond_via_frontier", beyond_via_frontier);
     v.section("llm", llm);
   }
 };
