@@ -87,6 +87,24 @@ TEST(BuiltinReasoner, LabelsRegionsFromTheirObjects) {
   EXPECT_EQ(three.source, "builtin");
 }
 
+TEST(BuiltinReasoner, EachKindOfObjectCountsOnce) {
+  // A room's type is told by the kinds of things in it, not by how many there are of one: six
+  // chairs round a table are a dining room, not a living room because chairs are mostly a
+  // living room's (apartment-82 "sofa", session 49: a dining room of five chairs was one).
+  BuiltinReasoner R(priors());
+  const std::vector<std::string> six(6, "chair");
+  auto with = [&](std::vector<std::string> v, const std::string& l) { return v.push_back(l), v; };
+  EXPECT_EQ(R.labelRegion(region(1, with(six, "table"))).label, "dining room");
+  const RegionSemantics one = R.labelRegion(region(2, {"chair"})), many = R.labelRegion(region(3, six));
+  EXPECT_EQ(many.label, one.label);
+  EXPECT_DOUBLE_EQ(many.confidence, one.confidence);
+  ASSERT_EQ(many.room_probs.size(), one.room_probs.size());
+  for (size_t k = 0; k < one.room_probs.size(); ++k) EXPECT_DOUBLE_EQ(many.room_probs[k], one.room_probs[k]);
+  double known = 0.0;
+  R.roomDistribution(with(six, "table"), &known);
+  EXPECT_DOUBLE_EQ(known, 2.0);  // two kinds
+}
+
 TEST(BuiltinReasoner, RanksTheBedroomLikeRegionFirstForABed) {
   BuiltinReasoner R(priors());
   const CoarseQuery q = house("bed");

@@ -53,8 +53,9 @@ class BuiltinReasoner : public Reasoner {
   RegionSemantics labelRegion(const RegionSummary& region) override;
   CoarseDecision chooseRegion(const CoarseQuery& query) override;
 
-  // P(room type) of a set of object labels (size priors.rooms()), a corridor's shape counting as
-  // one more object that says "hallway"; `known` = the evidence: labels with a prior (+ 1 shape).
+  // P(room type) of a set of object labels (size priors.rooms()): the mean of the rows of its
+  // kinds, each label once however often it occurs, a corridor's shape counting as one more
+  // kind that says "hallway"; `known` = the evidence: kinds with a prior (+ 1 shape).
   std::vector<double> roomDistribution(const std::vector<std::string>& labels, double* known = nullptr,
                                        bool corridor_shaped = false) const;
   // What a region's objects (or a corridor's shape) say about its room type: P(type) (size
