@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 namespace ussnav {
 namespace {
@@ -34,17 +36,18 @@ bool faces(const Vec3& from, const ObjectBrief& o, const OccupancyMap& map, doub
 
 int frontierFacing(const ObjectBrief& o, const std::vector<ExplorationTarget>& targets, const OccupancyMap& map,
                    double min_free) {
-  int best = -1;
-  double best_d = 0.0;
+  // Nearest first (ties: the lower index), so only the frontiers up to the first facing one
+  // cost a walk along their line.
+  std::vector<std::pair<double, int>> order;
   for (size_t i = 0; i < targets.size(); ++i) {
     const ExplorationTarget& t = targets[i];
-    if (t.kind != TargetKind::Frontier || t.region < 0) continue;
-    const double d = (t.centroid.head<2>() - o.position.head<2>()).norm();
-    if (best >= 0 && d >= best_d) continue;
-    if (!faces(t.centroid, o, map, min_free)) continue;
-    best = int(i), best_d = d;
+    if (t.kind == TargetKind::Frontier && t.region >= 0)
+      order.emplace_back((t.centroid.head<2>() - o.position.head<2>()).norm(), int(i));
   }
-  return best;
+  std::sort(order.begin(), order.end());
+  for (const auto& [d, i] : order)
+    if (faces(targets[size_t(i)].centroid, o, map, min_free)) return i;
+  return -1;
 }
 
 int facingFrontierRegions(std::vector<RegionSummary>& regions, const std::vector<ExplorationTarget>& targets,
