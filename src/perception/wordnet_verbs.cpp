@@ -102,6 +102,31 @@ std::string verbGlossOf(const std::string& word) {
       std::string());
 }
 
+std::vector<std::string> verbGlossesOf(const std::string& word, int senses) {
+  const std::string w = lower(word);
+  if (w.empty() || w.size() >= WORDBUF - 1 || w.find(' ') != std::string::npos || senses <= 0) return {};
+  return withDb(
+      [&](Db&) -> std::vector<std::string> {
+        std::vector<std::string> out;
+        for (const auto& base : verbBasesLocked(w)) {
+          std::vector<char> buf(base.begin(), base.end());
+          buf.push_back('\0');
+          IndexPtr idx = index_lookup(buf.data(), VERB);
+          if (!idx) continue;
+          char empty[1] = {0};
+          for (int i = 0; i < std::min(idx->off_cnt, senses); ++i)
+            if (SynsetPtr s = read_synset(VERB, idx->offset[i], empty)) {
+              out.push_back(cleanGloss(s->defn ? s->defn : ""));
+              free_synset(s);
+            }
+          free_index(idx);
+          if (!out.empty()) break;
+        }
+        return out;
+      },
+      std::vector<std::string>{});
+}
+
 namespace {
 
 // Adds the words of synset (pos, offset) to `out`: all of them, or only the `which`-th (1-based).

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "ussnav/core/error.hpp"
@@ -19,6 +20,9 @@ namespace {
 // washing machine, wardrobe -> cabinet, keyboard -> remote control); from 0.7 up it was mostly
 // the thing itself (refrigerator -> fridge 0.76, recliner -> arm chair 0.80, bunk bed -> bed).
 constexpr double kNearCosine = 0.7;
+// Verb senses read for a participle's state (CommonsensePriors::stateFor): "baking" is "be very
+// hot" in its fourth.
+constexpr int kStateVerbSenses = 4;
 
 std::string lower(std::string s) {
   for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
@@ -283,10 +287,31 @@ int CommonsensePriors::roomIndex(const std::string& name) const {
 }
 
 const CommonsensePriors::StateRow* CommonsensePriors::stateFor(const std::string& word) const {
-  if (const auto it = states_.find(word); it != states_.end()) return &it->second;
-  for (const auto& sense : wordnet::adjectiveClustersOf(word, 2))
-    for (const auto& w : sense)
-      if (const auto it = states_.find(w); it != states_.end()) return &it->second;
+  const auto asAdjective = [&](const std::string& a) -> const StateRow* {
+    if (const auto it = states_.find(a); it != states_.end()) return &it->second;
+    for (const auto& sense : wordnet::adjectiveClustersOf(a, 2))
+      for (const auto& w : sense)
+        if (const auto it = states_.find(w); it != states_.end()) return &it->second;
+    return nullptr;
+  };
+  if (const StateRow* row = asAdjective(word)) return row;
+  // A participle no row or cluster holds, of a verb one of whose senses is being in a state:
+  // "starving" (to starve: "be hungry; go without food"), "freezing" (its third sense, "be
+  // cold"), "baking" (its fourth, "be very hot"). The adjective after "be" and words of degree.
+  const bool participle = (word.size() > 4 && word.compare(word.size() - 3, 3, "ing") == 0) ||
+                          (word.size() > 3 && word.compare(word.size() - 2, 2, "ed") == 0);
+  if (!participle) return nullptr;
+  static const std::set<std::string> degree{"very", "extremely", "really", "too", "so", "quite"};
+  for (const auto& gloss : wordnet::verbGlossesOf(word, kStateVerbSenses)) {
+    std::istringstream in(gloss);
+    std::string w;
+    if (!(in >> w) || w != "be") continue;
+    while (in >> w && degree.count(w)) {
+    }
+    while (!w.empty() && !std::isalpha(static_cast<unsigned char>(w.back()))) w.pop_back();
+    if (w.empty()) continue;
+    if (const StateRow* row = asAdjective(w)) return row;
+  }
   return nullptr;
 }
 

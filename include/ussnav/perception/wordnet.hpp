@@ -57,6 +57,9 @@ std::string actGlossOf(const std::string& word);
 // Definition of the single word's most frequent verb sense, after verb morphology:
 // verbGlossOf("dining") = "have supper; eat dinner". Empty when WordNet has no such verb.
 std::string verbGlossOf(const std::string& word);
+// Definitions of the first `senses` senses of the first verb the word is, after verb
+// morphology, most frequent first: verbGlossesOf("freezing", 3)[2] = "be cold". Empty when none.
+std::vector<std::string> verbGlossesOf(const std::string& word, int senses);
 // Words for the act a verb names, to find it in a gloss written with other words (after verb
 // morphology; both empty when WordNet has no such verb). `verbs`: the lemmas of its most
 // frequent sense and the first lemma of each of that sense's hypernyms ("store" -> store, hive

@@ -71,7 +71,9 @@ class CommonsensePriors {
   double adjacency(int a, int b) const;
   // A state's row in states.tsv, of the word itself, else of the first of its two most frequent
   // WordNet adjective senses whose words or cluster head have one ("exhausted" -> tired,
-  // "drowsy" -> asleep, "filthy" -> dirty): what it stands for said of the one asking ("to
+  // "drowsy" -> asleep, "filthy" -> dirty), else, for an -ing or -ed word, of the adjective
+  // one of its verb's first four senses is being ("starving": "be hungry"; "freezing": "be
+  // cold"): what it stands for said of the one asking ("to
   // sleep"), and the act done to a thing or a part of the body in it ("wash"; "" when the state
   // calls for none: tired, hungry). nullptr when the word has no row.
   struct StateRow {
