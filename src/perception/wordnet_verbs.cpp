@@ -47,6 +47,21 @@ IndexPtr adjectiveIndexLocked(const std::string& w, bool morph) {
   return idx;
 }
 
+// Definitions of the first `senses` senses of index entry `idx` of part of speech `pos`, most
+// frequent first; frees idx.
+std::vector<std::string> glossesLocked(IndexPtr idx, int pos, int senses) {
+  std::vector<std::string> out;
+  if (!idx) return out;
+  char empty[1] = {0};
+  for (int i = 0; i < std::min(idx->off_cnt, senses); ++i)
+    if (SynsetPtr s = read_synset(pos, idx->offset[i], empty)) {
+      out.push_back(cleanGloss(s->defn ? s->defn : ""));
+      free_synset(s);
+    }
+  free_index(idx);
+  return out;
+}
+
 }  // namespace
 
 bool knownAsVerb(const std::string& word) {
@@ -107,22 +122,12 @@ std::vector<std::string> verbGlossesOf(const std::string& word, int senses) {
   if (w.empty() || w.size() >= WORDBUF - 1 || w.find(' ') != std::string::npos || senses <= 0) return {};
   return withDb(
       [&](Db&) -> std::vector<std::string> {
-        std::vector<std::string> out;
         for (const auto& base : verbBasesLocked(w)) {
           std::vector<char> buf(base.begin(), base.end());
           buf.push_back('\0');
-          IndexPtr idx = index_lookup(buf.data(), VERB);
-          if (!idx) continue;
-          char empty[1] = {0};
-          for (int i = 0; i < std::min(idx->off_cnt, senses); ++i)
-            if (SynsetPtr s = read_synset(VERB, idx->offset[i], empty)) {
-              out.push_back(cleanGloss(s->defn ? s->defn : ""));
-              free_synset(s);
-            }
-          free_index(idx);
-          if (!out.empty()) break;
+          if (auto out = glossesLocked(index_lookup(buf.data(), VERB), VERB, senses); !out.empty()) return out;
         }
-        return out;
+        return std::vector<std::string>{};
       },
       std::vector<std::string>{});
 }
@@ -276,17 +281,7 @@ std::vector<std::string> adjectiveGlossesOf(const std::string& word, int senses)
   if (w.empty() || w.size() >= WORDBUF - 1 || w.find(' ') != std::string::npos || senses <= 0) return {};
   return withDb(
       [&](Db&) -> std::vector<std::string> {
-        std::vector<std::string> out;
-        IndexPtr idx = adjectiveIndexLocked(w, false);
-        if (!idx) return out;
-        char empty[1] = {0};
-        for (int i = 0; i < std::min(idx->off_cnt, senses); ++i)
-          if (SynsetPtr s = read_synset(ADJ, idx->offset[i], empty)) {
-            out.push_back(cleanGloss(s->defn ? s->defn : ""));
-            free_synset(s);
-          }
-        free_index(idx);
-        return out;
+        return glossesLocked(adjectiveIndexLocked(w, false), ADJ, senses);
       },
       std::vector<std::string>{});
 }
