@@ -67,6 +67,23 @@ TEST(WordNet, AdjectiveClusters) {
   EXPECT_TRUE(wordnet::adjectiveClustersOf("", 2).empty());
 }
 
+TEST(WordNet, VerbAndAdjectiveGlosses) {
+  // A verb's senses in frequency order, after morphology: "freezing" is to freeze, whose first
+  // senses are to stop moving, to change to ice, and to be cold.
+  const auto freezing = wordnet::verbGlossesOf("freezing", 3);
+  ASSERT_EQ(freezing.size(), 3u);
+  EXPECT_EQ(freezing[2], "be cold");
+  EXPECT_EQ(wordnet::verbGlossesOf("starving", 1).at(0).rfind("be hungry", 0), 0u);
+  EXPECT_EQ(wordnet::verbGlossesOf("parch", 5).size(), 1u);  // it has one sense
+  EXPECT_TRUE(wordnet::verbGlossesOf("zorblax", 2).empty());
+  EXPECT_TRUE(wordnet::verbGlossesOf("sleep", 0).empty());
+  // Adjectives: no morphology, most frequent first.
+  const auto hungry = wordnet::adjectiveGlossesOf("hungry", 2);
+  ASSERT_FALSE(hungry.empty());
+  EXPECT_NE(hungry[0].find("to eat"), std::string::npos);
+  EXPECT_TRUE(wordnet::adjectiveGlossesOf("sofa", 2).empty());
+}
+
 TEST(WordNet, MultiWordLabels) {
   EXPECT_EQ(wordnet::labelTokens("DiningTable"), (std::vector<std::string>{"dining", "table"}));
   EXPECT_EQ(wordnet::labelTokens("TVStand"), (std::vector<std::string>{"tv", "stand"}));
