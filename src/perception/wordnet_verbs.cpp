@@ -90,31 +90,8 @@ std::string actGlossOf(const std::string& word) {
 }
 
 std::string verbGlossOf(const std::string& word) {
-  const std::string w = lower(word);
-  if (w.empty() || w.size() >= WORDBUF - 1 || w.find(' ') != std::string::npos) return {};
-  return withDb(
-      [&](Db&) -> std::string {
-        const auto firstSense = [](const std::string& v) -> std::string {
-          std::vector<char> buf(v.begin(), v.end());
-          buf.push_back('\0');
-          IndexPtr idx = index_lookup(buf.data(), VERB);
-          if (!idx) return {};
-          std::string gloss;
-          if (idx->off_cnt > 0) {
-            char empty[1] = {0};
-            if (SynsetPtr s = read_synset(VERB, idx->offset[0], empty)) {
-              gloss = cleanGloss(s->defn ? s->defn : "");
-              free_synset(s);
-            }
-          }
-          free_index(idx);
-          return gloss;
-        };
-        for (const auto& base : verbBasesLocked(w))
-          if (std::string g = firstSense(base); !g.empty()) return g;
-        return {};
-      },
-      std::string());
+  const auto glosses = verbGlossesOf(word, 1);
+  return glosses.empty() ? std::string() : glosses.front();
 }
 
 std::vector<std::string> verbGlossesOf(const std::string& word, int senses) {
@@ -125,7 +102,8 @@ std::vector<std::string> verbGlossesOf(const std::string& word, int senses) {
         for (const auto& base : verbBasesLocked(w)) {
           std::vector<char> buf(base.begin(), base.end());
           buf.push_back('\0');
-          if (auto out = glossesLocked(index_lookup(buf.data(), VERB), VERB, senses); !out.empty()) return out;
+          if (auto out = glossesLocked(index_lookup(buf.data(), VERB), VERB, senses); !out.empty() && !out[0].empty())
+            return out;
         }
         return std::vector<std::string>{};
       },

@@ -69,13 +69,13 @@ class CommonsensePriors {
   std::vector<double> roomsGivenObject(const std::string& label) const;
   // Room adjacency prior in [0, 1] (listed pairs, else 0.1).
   double adjacency(int a, int b) const;
-  // A state's row in states.tsv, of the word itself, else of the first of its two most frequent
-  // WordNet adjective senses whose words or cluster head have one ("exhausted" -> tired,
-  // "drowsy" -> asleep, "filthy" -> dirty), else, for an -ing or -ed word, of the adjective
-  // one of its verb's first four senses is being ("starving": "be hungry"; "freezing": "be
-  // cold"): what it stands for said of the one asking ("to
-  // sleep"), and the act done to a thing or a part of the body in it ("wash"; "" when the state
-  // calls for none: tired, hungry). nullptr when the word has no row.
+  // A state's row in states.tsv: of the word itself, else of the first of its two most frequent
+  // WordNet adjective senses whose words or cluster head have one ("exhausted" -> tired, "drowsy"
+  // -> asleep, "filthy" -> dirty), else, for an -ing or -ed word, of the adjective one of its
+  // verb's first four senses is being ("starving": "be hungry"; "freezing": "be cold"). The row
+  // holds what the state stands for said of the one asking ("to sleep"), and the act done to a
+  // thing or a part of the body in it ("wash"; "" when the state calls for none: tired, hungry).
+  // nullptr when the word has no row.
   struct StateRow {
     std::string request;
     std::string act;
