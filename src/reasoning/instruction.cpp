@@ -26,6 +26,13 @@ bool physicalLexfile(const std::string& lf) {
 // in the building, though WordNet also has a clock's hands and a saw's teeth among its artifacts.
 bool bodyPart(const std::string& phrase) { return wordnet::usualNounLexfile(phrase) == "noun.body"; }
 
+// A thing called by the act's own word is a candidate only when that is what the word first
+// means: a mop is "a cleaning implement", to mop is to clean with one; a print is first a
+// printed text, a work an activity, a heat a form of energy.
+bool sameWordTool(const std::string& noun) {
+  return wordnet::usualNounLexfile(noun) == "noun.artifact" && !noun.ends_with("ing");
+}
+
 std::string joinWords(const std::vector<std::string>& w, size_t a, size_t b) {
   std::string s;
   for (size_t i = a; i < b; ++i) s += (i > a ? " " : "") + w[i];
@@ -353,11 +360,12 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   const size_t known_vocab = vocab.size();  // those after it are derived from the act
   for (const auto& v : verbs)
     for (const auto& n : wordnet::verbKin(verbOfStem(v)).nouns) {
-      if (n.find(' ') != std::string::npos || stemWord(n) == v || std::find(vocab.begin(), vocab.end(), n) != vocab.end())
+      if (n.find(' ') != std::string::npos || (stemWord(n) == v && !sameWordTool(n)) || std::find(vocab.begin(), vocab.end(), n) != vocab.end())
         continue;
       const auto sense = wordnet::lookupNoun(n);
-      if (sense && sense->lexfile == "noun.artifact" && !wordnet::namesPlace(n) && wordnet::nounOfVerb(n, verbOfStem(v)))
+      if (sense && sense->lexfile == "noun.artifact" && !wordnet::namesPlace(n) && wordnet::nounOfVerb(n, verbOfStem(v))) {
         vocab.push_back(n);  // a brewery is no thing to brew tea with
+      }
     }
   // A request that names what the act is on ("store CLOTHES", "watch TV") is answered only by
   // things that name it too: a watch is no place to watch tv, nor a dresser ("for keeping
@@ -375,7 +383,10 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   bool act_verb = false;  // a verb naming an act ("cook", not "make")
   for (size_t i = 0; i < content.size(); ++i) act_verb = act_verb || (verb[i] && !generalVerb(content[i]));
   const bool named_category = !named.empty() && namesCategory(P, named);
-  bool act_on_other = !named.empty() && act_verb && !place_asked(words) && !named_category;
+  // Unless the thing named is itself what the act is done with: a piano "is played by depressing
+  // keys", so "play the piano" asks for a piano, not for a tennis racket.
+  const bool named_for_act = !named.empty() && matchRequest(want, verbs, named, "", true, false).for_act;
+  bool act_on_other = !named.empty() && act_verb && !place_asked(words) && !named_category && !named_for_act;
   std::vector<std::pair<double, std::string>> scored;
   std::set<std::string> act_named;
   bool known_scored = false;

@@ -130,6 +130,29 @@ TEST(Instruction, AVerbIsAnActionNotTheObjectSought) {
   EXPECT_FALSE(wordnet::knownAsVerb("sofa"));
 }
 
+// Session 51. A thing named that is itself what the act is done with is sought, not what does
+// the act elsewhere: a piano "is played by depressing keys", so "play the piano" looks for a
+// piano (it looked for a tennis racket, "used to play tennis"). And a tool called by the act's
+// own word is a candidate when that is what the word first means: a mop is first "a cleaning
+// implement" (the floor was a dish sponge's to mop); a print is first a printed text, and a
+// work an activity, so printing and working find a printer and an office as before.
+TEST(Instruction, AThingNamedForTheActIsWhatTheActNeeds) {
+  const auto& P = *priors();
+  EXPECT_EQ(first("I want to play the piano"), "piano");
+  EXPECT_EQ(first("I want to play the guitar"), "guitar");
+  EXPECT_EQ(interpretInstruction("I want to play the piano", P).how, "named");
+  // The named thing whose gloss does not use the act still leaves the search to what does it.
+  EXPECT_EQ(first("I want to cook dinner"), "pan");
+  EXPECT_EQ(first("I need to wash clothes"), "washing machine");
+  EXPECT_EQ(first("I need to mop the floor"), "mop");
+  EXPECT_EQ(first("I need to comb my hair"), "comb");
+  EXPECT_EQ(first("I need to print a document"), "printer");
+  const Instruction W = interpretInstruction("somewhere to work", P);
+  EXPECT_FALSE(contains(W.targets, "work"));
+  EXPECT_EQ(W.room, "office");
+  EXPECT_FALSE(contains(interpretInstruction("heat up my lunch", P).targets, "heat"));
+}
+
 TEST(Instruction, APartOfTheBodyIsNotTheThingSought) {
   // WordNet lists a clock's hands and a saw's teeth among its artifacts, so "hands" and "teeth"
   // were read as things to look for. Their usual sense is the body part: the requester's own.
@@ -412,8 +435,9 @@ TEST(Instruction, KindsOfAThingTiesAndTheSenseOfAnIngWord) {
 // run, 18 after two rules written having seen its misses; a third, fresh list, written after
 // the last rule and run once: 11 -> 18 of 30). Session 43's three rules (kinds, ties, -ing
 // words): dev 33, held-out 21, fresh 18, and a fourth list written before them reads 14 of 31
-// with and without them. The floors are those counts; the misses are printed, to be read and
-// bettered, not to be tuned to.
+// with and without them. A seventh, written at session 51's start, read 16 of 34 then. The
+// floors are those counts, as later sessions raised them; the misses are printed, to be read
+// and bettered, not to be tuned to.
 TEST(Instruction, JudgedRequestsReadAtLeastAsWellAsBefore) {
   const auto& P = *priors();
   const auto judge = [&](const std::string& file) {
@@ -450,10 +474,11 @@ TEST(Instruction, JudgedRequestsReadAtLeastAsWellAsBefore) {
   // file, requests in it, floor
   const std::tuple<const char*, int, int> lists[] = {{"requests_dev.tsv", 44, 35},
                                                      {"requests_heldout.tsv", 38, 23},
-                                                     {"requests_fresh.tsv", 30, 18},
+                                                     {"requests_fresh.tsv", 30, 19},
                                                      {"requests_fresh2.tsv", 31, 15},
                                                      {"requests_states.tsv", 20, 18},
-                                                     {"requests_parts.tsv", 18, 12}};
+                                                     {"requests_parts.tsv", 18, 12},
+                                                     {"requests_fresh3.tsv", 34, 17}};
   for (const auto& [file, count, floor] : lists) {
     const auto [right, total] = judge(file);
     EXPECT_EQ(total, count) << file;

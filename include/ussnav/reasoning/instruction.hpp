@@ -13,7 +13,8 @@
 //     ("wash clothes" -> washing machine); asked for a place ("somewhere to hang my coat") the
 //     object is only one candidate of step 3 and the request is judged (a coat rack serves it);
 //     an object that names no category ("cook dinner", "clean the floor") leaves the search to
-//     what does the act (a pan; a vacuum cleaner), and only that serves (act_required). A word
+//     what does the act (a pan; a vacuum cleaner), and only that serves (act_required), unless
+//     its own gloss uses the act as a verb ("play the piano": a piano "is played"). A word
 //     names a thing only when that is one of its first two WordNet senses ("a rest" is none);
 //  3. otherwise a functional request: the content words (stemmed, filler words dropped) are
 //     looked up in each candidate category's name, synonyms and WordNet gloss ("bed: a piece of
@@ -22,7 +23,8 @@
 //     verb hypernyms hold the act: to sleep is to rest and to lie; 0.9 of it where only the
 //     hypernym's gloss answers, 0.8 where only a kind of it is for the act: a sink may be a
 //     washbasin, "where you can wash your hands"); nouns WordNet derives from the act are
-//     candidates too ("print" -> printer), looked for when no category answers by name or
+//     candidates too ("print" -> printer; the act's own word when a thing is what it first
+//     means: "mop" -> mop, not "print" -> print), looked for when no category answers by name or
 //     purpose; the best-scoring categories become the targets (among equals, one named for the
 //     act, then furniture, fixtures and appliances: a dining table before a fork), the
 //     best-scoring room type a hint;
