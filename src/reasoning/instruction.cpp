@@ -78,10 +78,7 @@ void rewriteStates(std::vector<std::string>& words, const CommonsensePriors& P) 
                                              "gets", "getting", "got", "become", "becoming"};
   static const std::set<std::string> persons{"i", "we", "you", "he", "she", "they"};
   static const std::set<std::string> possessives{"my", "our", "your", "his", "her", "their"};
-  static const std::set<std::string> degree{"so",       "very",    "really", "too",    "quite",  "pretty",
-                                            "rather",   "a",       "bit",    "little", "all",    "kind",
-                                            "sort",     "of",      "kinda",  "super",  "totally", "completely",
-                                            "terribly", "awfully", "extremely", "incredibly", "just", "still"};
+  const std::set<std::string>& degree = degreeWords();
   // Whose state follows words[k]: a person's, a thing's (words[from] its determiner, the noun
   // next), or nobody's. A copula's subject is the word before it, words of degree aside, or the
   // subject of the copula before ("I am still getting", "my coffee is getting").

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "ussnav/core/error.hpp"
+#include "request_words.hpp"
 #include "ussnav/perception/wordnet.hpp"
 
 namespace ussnav {
@@ -301,12 +302,11 @@ const CommonsensePriors::StateRow* CommonsensePriors::stateFor(const std::string
   const bool participle = (word.size() > 4 && word.compare(word.size() - 3, 3, "ing") == 0) ||
                           (word.size() > 3 && word.compare(word.size() - 2, 2, "ed") == 0);
   if (!participle) return nullptr;
-  static const std::set<std::string> degree{"very", "extremely", "really", "too", "so", "quite"};
   for (const auto& gloss : wordnet::verbGlossesOf(word, kStateVerbSenses)) {
     std::istringstream in(gloss);
     std::string w;
     if (!(in >> w) || w != "be") continue;
-    while (in >> w && degree.count(w)) {
+    while (in >> w && request::degreeWords().count(w)) {
     }
     while (!w.empty() && !std::isalpha(static_cast<unsigned char>(w.back()))) w.pop_back();
     if (w.empty()) continue;

@@ -28,6 +28,15 @@ const std::set<std::string>& verbCues() {
   return c;
 }
 
+// Words of degree between a state and who is in it: "I'm SO tired", "I'm A BIT cold", "be VERY hot".
+const std::set<std::string>& degreeWords() {
+  static const std::set<std::string> d{"so",       "very",    "really", "too",    "quite",  "pretty",
+                                       "rather",   "a",       "bit",    "little", "all",    "kind",
+                                       "sort",     "of",      "kinda",  "super",  "totally", "completely",
+                                       "terribly", "awfully", "extremely", "incredibly", "just", "still"};
+  return d;
+}
+
 // Verbs that take their meaning from the act after them: "take a bath", "have a nap".
 const std::set<std::string>& lightVerbs() {
   static const std::set<std::string> v{"take", "have", "get", "grab", "taking", "having"};

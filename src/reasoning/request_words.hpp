@@ -1,8 +1,8 @@
 #pragma once
-// Internal to the instruction reader (instruction.cpp, request_match.cpp): the words of a
-// request, as both sides of a gloss match read them. Sets of filler words, verb cues and light
-// verbs; stems; a closed compound's parts; which verbs are too general to name an act; a verb's
-// kin (WordNet synonyms and first hypernym).
+// Internal to the instruction reader (instruction.cpp, request_match.cpp, and priors.cpp for a
+// state's words): the words of a request, as both sides of a gloss match read them. Sets of
+// filler words, verb cues, words of degree and light verbs; stems; a closed compound's parts;
+// which verbs are too general to name an act; a verb's kin (WordNet synonyms and first hypernym).
 
 #include <set>
 #include <string>
@@ -14,6 +14,8 @@ namespace ussnav::request {
 const std::set<std::string>& fillers();
 // Words after which a verb stands: "to print", "I wash", "can eat", "please watch", "let's eat".
 const std::set<std::string>& verbCues();
+// Words of degree between a state and who is in it: "I'm SO tired", "be VERY hot".
+const std::set<std::string>& degreeWords();
 // Verbs that take their meaning from the act after them: "take a bath", "have a nap".
 const std::set<std::string>& lightVerbs();
 // Stems of a text's words, filler words dropped.
