@@ -236,6 +236,7 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   // among its artifacts; a verb names what to do, not what to look for.
   std::vector<std::string> content;
   std::vector<bool> verb;
+  std::vector<size_t> at;  // where each content word stands in words
   for (size_t i = 0; i < words.size(); ++i) {
     if (fillers().count(words[i])) continue;
     const bool cued = i > 0 && verbCues().count(words[i - 1]);
@@ -243,6 +244,7 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
                        std::any_of(words.begin() + 1, words.end(), [](const std::string& x) { return !fillers().count(x); });
     content.push_back(words[i]);
     verb.push_back((cued || leads) && wordnet::knownAsVerb(words[i]));
+    at.push_back(i);
   }
   if (content.empty()) {
     if (!I.room.empty()) {
@@ -258,6 +260,8 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   std::string named;
   for (size_t n = std::min<size_t>(3, content.size()); n >= 1 && named.empty(); --n)
     for (size_t i = 0; i + n <= content.size(); ++i) {
+      // Words said together: "water the plants" names no water plant.
+      if (at[i + n - 1] - at[i] != n - 1) continue;
       const std::string phrase = joinWords(content, i, i + n);
       const bool has_verb = std::any_of(verb.begin() + long(i), verb.begin() + long(i + n), [](bool v) { return v; });
       if (has_verb && (n < 2 || !wordnet::lookupNoun(phrase))) continue;
@@ -298,6 +302,7 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
     named.clear();
     content.clear();
     verb.clear();
+    at.clear();  // read above only
     for (const auto& w : act)
       if (!fillers().count(w)) content.push_back(w), verb.push_back(false);
   }

@@ -151,6 +151,12 @@ TEST(Instruction, AThingNamedForTheActIsWhatTheActNeeds) {
   EXPECT_FALSE(contains(W.targets, "work"));
   EXPECT_EQ(W.room, "office");
   EXPECT_FALSE(contains(interpretInstruction("heat up my lunch", P).targets, "heat"));
+  // A thing is named by words said together: "water the plants" names no water plant (an
+  // aquatic plant, which WordNet has), nor "flush the toilet" a flush toilet.
+  EXPECT_EQ(first("water the plants"), "watering can");
+  EXPECT_EQ(first("I want to flush the toilet"), "toilet");
+  EXPECT_EQ(first("I want to take a nap on the couch"), "couch");
+  EXPECT_EQ(first("I need to wash the dishes"), "dishwasher");
 }
 
 TEST(Instruction, APartOfTheBodyIsNotTheThingSought) {
@@ -472,8 +478,8 @@ TEST(Instruction, JudgedRequestsReadAtLeastAsWellAsBefore) {
     return std::pair{right, total};
   };
   // file, requests in it, floor
-  const std::tuple<const char*, int, int> lists[] = {{"requests_dev.tsv", 44, 35},
-                                                     {"requests_heldout.tsv", 38, 23},
+  const std::tuple<const char*, int, int> lists[] = {{"requests_dev.tsv", 44, 36},
+                                                     {"requests_heldout.tsv", 38, 24},
                                                      {"requests_fresh.tsv", 30, 19},
                                                      {"requests_fresh2.tsv", 31, 15},
                                                      {"requests_states.tsv", 20, 18},

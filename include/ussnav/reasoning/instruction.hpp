@@ -6,8 +6,9 @@
 //     the room constraint; a particle after a verb WordNet knows with it goes ("lie down",
 //     "work out" -> "to exercise"), and a word that is only an adjective whose definition names
 //     an act becomes it ("hungry": "a desire to eat food" -> "to eat");
-//  2. a named object: the longest word n-gram that WordNet knows as a physical thing (artifact,
-//     plant, object, food) or that matches a category of the priors by text cosine -> targets;
+//  2. a named object: the longest n-gram of words said together ("water the plants" names no
+//     water plant) that WordNet knows as a physical thing (artifact, plant, object, food) or
+//     that matches a category of the priors by text cosine -> targets;
 //     a verb ("watch" tv, "to use" the toilet) starts none unless the n-gram is a WordNet noun,
 //     and with a verb present step 3 may name a category that fits verb and object better
 //     ("wash clothes" -> washing machine); asked for a place ("somewhere to hang my coat") the
