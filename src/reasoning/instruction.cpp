@@ -297,6 +297,11 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
     const std::string& noun = words[k];
     if (fillers().count(noun) || (!named.empty() && named != noun) || namesCategory(P, noun)) continue;
     act = instructionWords(wordnet::actGlossOf(noun));
+    // A light verb and a meal or a drink that is a verb too: to have breakfast is to
+    // breakfast, to "eat an early morning meal" (to take the trash is not to trash it).
+    if (act.empty() && lightVerbs().count(words[i]) && wordnet::usualNounLexfile(noun) == "noun.food" &&
+        wordnet::knownAsVerb(noun))
+      act = instructionWords(wordnet::verbGlossOf(noun));
   }
   if (!act.empty()) {
     named.clear();

@@ -157,6 +157,10 @@ TEST(Instruction, AThingNamedForTheActIsWhatTheActNeeds) {
   EXPECT_EQ(first("I want to flush the toilet"), "toilet");
   EXPECT_EQ(first("I want to take a nap on the couch"), "couch");
   EXPECT_EQ(first("I need to wash the dishes"), "dishwasher");
+  // A light verb and a meal that is a verb too: to have breakfast is to "eat an early morning
+  // meal" (it looked for breakfast itself); to take out the trash is not to trash it.
+  EXPECT_EQ(first("I want to have breakfast"), "dining table");
+  EXPECT_EQ(first("I need to take out the trash"), "garbage can");
 }
 
 TEST(Instruction, APartOfTheBodyIsNotTheThingSought) {
@@ -478,7 +482,7 @@ TEST(Instruction, JudgedRequestsReadAtLeastAsWellAsBefore) {
     return std::pair{right, total};
   };
   // file, requests in it, floor
-  const std::tuple<const char*, int, int> lists[] = {{"requests_dev.tsv", 44, 36},
+  const std::tuple<const char*, int, int> lists[] = {{"requests_dev.tsv", 44, 37},
                                                      {"requests_heldout.tsv", 38, 24},
                                                      {"requests_fresh.tsv", 30, 19},
                                                      {"requests_fresh2.tsv", 31, 15},

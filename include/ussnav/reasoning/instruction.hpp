@@ -16,7 +16,10 @@
 //     an object that names no category ("cook dinner", "clean the floor") leaves the search to
 //     what does the act (a pan; a vacuum cleaner), and only that serves (act_required), unless
 //     its own gloss uses the act as a verb ("play the piano": a piano "is played"). A word
-//     names a thing only when that is one of its first two WordNet senses ("a rest" is none);
+//     names a thing only when that is one of its first two WordNet senses ("a rest" is none).
+//     A light verb and an act ("take a bath", "I need a nap") ask for what the act needs: the
+//     act's WordNet gloss is read as the request; a meal that is a verb too, its verb's ("have
+//     breakfast": to "eat an early morning meal");
 //  3. otherwise a functional request: the content words (stemmed, filler words dropped) are
 //     looked up in each candidate category's name, synonyms and WordNet gloss ("bed: a piece of
 //     furniture that provides a place to sleep": 2 for a name, 1.5 for a purpose "to / for W",
