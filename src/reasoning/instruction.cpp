@@ -367,12 +367,12 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   const size_t known_vocab = vocab.size();  // those after it are derived from the act
   for (const auto& v : verbs)
     for (const auto& n : wordnet::verbKin(verbOfStem(v)).nouns) {
-      if (n.find(' ') != std::string::npos || (stemWord(n) == v && !sameWordTool(n)) || std::find(vocab.begin(), vocab.end(), n) != vocab.end())
+      if (n.find(' ') != std::string::npos || (stemWord(n) == v && !sameWordTool(n)) ||
+          std::find(vocab.begin(), vocab.end(), n) != vocab.end())
         continue;
       const auto sense = wordnet::lookupNoun(n);
-      if (sense && sense->lexfile == "noun.artifact" && !wordnet::namesPlace(n) && wordnet::nounOfVerb(n, verbOfStem(v))) {
+      if (sense && sense->lexfile == "noun.artifact" && !wordnet::namesPlace(n) && wordnet::nounOfVerb(n, verbOfStem(v)))
         vocab.push_back(n);  // a brewery is no thing to brew tea with
-      }
     }
   // A request that names what the act is on ("store CLOTHES", "watch TV") is answered only by
   // things that name it too: a watch is no place to watch tv, nor a dresser ("for keeping
