@@ -391,9 +391,10 @@ Instruction interpretInstruction(const std::string& text, const CommonsensePrior
   for (size_t i = 0; i < content.size(); ++i) act_verb = act_verb || (verb[i] && !generalVerb(content[i]));
   const bool named_category = !named.empty() && namesCategory(P, named);
   // Unless the thing named is itself what the act is done with: a piano "is played by depressing
-  // keys", so "play the piano" asks for a piano, not for a tennis racket.
-  const bool named_for_act = !named.empty() && matchRequest(want, verbs, named, "", true, false).for_act;
-  bool act_on_other = !named.empty() && act_verb && !place_asked(words) && !named_category && !named_for_act;
+  // keys", so "play the piano" asks for a piano, not for a tennis racket (its gloss read last,
+  // only when the rest holds).
+  bool act_on_other = !named.empty() && act_verb && !place_asked(words) && !named_category &&
+                      !matchRequest(want, verbs, named, "", true, false).for_act;
   std::vector<std::pair<double, std::string>> scored;
   std::set<std::string> act_named;
   bool known_scored = false;
