@@ -65,6 +65,10 @@ class CommonsensePriors {
   // "kitchen counter", "microwave" (a kitchen appliance), "filing cabinet" (office furniture);
   // -1 when none.
   int roomCue(const std::string& label) const;
+  // Whether WordNet knows the label by its head noun only, with a thing before it that is no
+  // room, animal or furnishing ("shoe cabinet", "towel rack"; not "office chair", "dog bed",
+  // "sofa bed"): a kind made for that thing, whose room the head's table row says only loosely.
+  bool forAThing(const std::string& label) const;
   // P(room | an object with this label), size rooms(); empty when the label matches no category.
   std::vector<double> roomsGivenObject(const std::string& label) const;
   // Room adjacency prior in [0, 1] (listed pairs, else 0.1).
@@ -91,6 +95,9 @@ class CommonsensePriors {
     std::string category;          // as words
     std::vector<std::string> names;  // category and its aliases (mpcat40), matched against labels
     std::vector<double> p;         // over rooms_, sums to 1
+    // Per name: its head noun when it names a kind made for another thing (forAThing: "coffee
+    // machine" -> "machine"), else "".
+    std::vector<std::string> kind_heads;
   };
   std::vector<RoomType> rooms_;
   std::vector<std::vector<double>> adjacency_;
