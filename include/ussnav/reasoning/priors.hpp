@@ -66,7 +66,7 @@ class CommonsensePriors {
   // -1 when none.
   int roomCue(const std::string& label) const;
   // Whether WordNet knows the label by its head noun only, with a thing before it that is no
-  // room, animal or furnishing ("shoe cabinet", "towel rack"; not "office chair", "dog bed",
+  // room, animal or furnishing ("shoe cabinet", "wine rack"; not "office chair", "dog bed",
   // "sofa bed"): a kind made for that thing, whose room the head's table row says only loosely.
   bool forAThing(const std::string& label) const;
   // P(room | an object with this label), size rooms(); empty when the label matches no category.
