@@ -350,27 +350,28 @@ std::vector<double> CommonsensePriors::roomsGivenObject(const std::string& label
   // of it ("tv" -> "television", an alias of tv_monitor). A label that names a category is not
   // widened by its synonyms: "toilet" is also a "stool" and a "pot" in WordNet, which put a
   // kitchen's pots into every bathroom. Otherwise every row within match_cosine.
-  auto addNamed = [&](const std::vector<std::string>& keys) {
+  // A row, or a loose match's: half of it, mixed with a uniform row.
+  auto addRow = [&](const Row& r, bool loose) {
+    for (size_t k = 0; k < sum.size(); ++k) sum[k] += loose ? 0.5 * r.p[k] + 0.5 / double(sum.size()) : r.p[k];
+    ++n;
+  };
+  auto addNamed = [&](const std::vector<std::string>& keys, bool loose) {
     for (const Row& r : rows_)
       if (std::any_of(keys.begin(), keys.end(), [&](const std::string& k) {
             return std::any_of(r.names.begin(), r.names.end(), [&](const std::string& x) { return joined(x) == joined(k); });
-          })) {
-        for (size_t k = 0; k < sum.size(); ++k) sum[k] += r.p[k];
-        ++n;
-      }
+          }))
+        addRow(r, loose);
   };
-  addNamed({key});
+  addNamed({key}, false);
   if (n == 0)
-    if (auto it = mp3d_.find(key); it != mp3d_.end()) addNamed({it->second});
+    if (auto it = mp3d_.find(key); it != mp3d_.end()) addNamed({it->second}, false);
   if (n == 0) {
     std::vector<std::string> synonyms;
     for (const auto& syn : wordnet::synonymsOf(key)) synonyms.push_back(lower(syn));
-    addNamed(synonyms);
     // Synonyms of a label known by its head noun are the head's: a "shoe cabinet" is matched
     // as any cabinet, whose row is the table's (kitchen) cabinets. Made for another thing, it
-    // keeps that row at half weight, mixed with a uniform row (as a loose text match).
-    if (n > 0 && forAThing(key))
-      for (double& x : sum) x = 0.5 * x + 0.5 * double(n) / double(sum.size());
+    // matches loosely.
+    addNamed(synonyms, forAThing(key));
   }
   // Rows of compounds the label is the modifier of are its accessories, which stand where it
   // does: "tv" -> TVStand, "toilet" -> ToiletPaper, "shower" -> ShowerCurtain. (MP3D files a
@@ -385,10 +386,8 @@ std::vector<double> CommonsensePriors::roomsGivenObject(const std::string& label
       if (std::any_of(names.begin(), names.end(), [&](const std::string& w) {
             return !w.empty() && r.category.size() > w.size() + 1 && r.category.compare(0, w.size() + 1, w + " ") == 0 &&
                    r.category.find(' ', w.size() + 1) == std::string::npos;
-          })) {
-        for (size_t k = 0; k < sum.size(); ++k) sum[k] += r.p[k];
-        ++n;
-      }
+          }))
+        addRow(r, false);
   }
   // A room named in the label or in its nearest hypernym is the label's own word for where it
   // stands ("office chair": a chair, and an office's): one more row, all on that room. It stands
@@ -410,9 +409,9 @@ std::vector<double> CommonsensePriors::roomsGivenObject(const std::string& label
     // (0.76 and 0.89 by the encoder), and neither is a kitchen's; a "sponge" is near a dish
     // sponge, but loosely, as above: it need not be one.
     const auto tokens = wordnet::labelTokens(key);
+    const auto forms = tokens.empty() ? std::vector<std::string>{} : wordnet::nounForms(tokens.back());
     const auto namesKind = [&](const std::string& name, const std::string& head) {
       if (tokens.empty()) return false;
-      const auto forms = wordnet::nounForms(tokens.back());
       if (tokens.back() != head && std::find(forms.begin(), forms.end(), head) == forms.end()) return false;
       const auto words = wordnet::labelTokens(name);
       return std::all_of(tokens.begin(), tokens.end() - 1,
@@ -432,11 +431,7 @@ std::vector<double> CommonsensePriors::roomsGivenObject(const std::string& label
     const bool loose = best < match_cosine_ || forAThing(key);
     if (!loose || (best >= kNearCosine && cue < 0))
       for (size_t i = 0; i < rows_.size(); ++i)
-        if (cos[i] >= (loose ? best - 1e-9 : match_cosine_)) {
-          const bool half = loose || kind[i];
-          for (size_t k = 0; k < sum.size(); ++k) sum[k] += half ? 0.5 * rows_[i].p[k] + 0.5 / double(sum.size()) : rows_[i].p[k];
-          ++n;
-        }
+        if (cos[i] >= (loose ? best - 1e-9 : match_cosine_)) addRow(rows_[i], loose || kind[i]);
   }
   std::vector<double> out;
   if (n > 0) {
